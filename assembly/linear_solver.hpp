@@ -1,0 +1,40 @@
+#pragma once
+// Sparse direct solvers behind one interface. The work is split the way a Newton loop needs it:
+// analyze() once per sparsity pattern (ordering, symbolic factorisation), factorize() whenever the
+// values change, solve() for each right-hand side. A singular matrix or a failed factorisation throws
+// pc::Error naming the solver and its status; no solver returns garbage silently.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/sparse.hpp"
+
+namespace pc {
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  virtual std::string name() const = 0;
+  // Symbolic phase for the pattern of a (square, compressed) matrix.
+  virtual void analyze(const CsrMatrix& matrix) = 0;
+  // Numeric factorisation; the matrix must have the pattern given to analyze().
+  virtual void factorize(const CsrMatrix& matrix) = 0;
+  // Solves A x = b with the last factorisation. Throws when x misses b by more than 1e-3 relative,
+  // the mark of a numerically singular matrix.
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+  // True when the last analyze() succeeded on exactly this pattern, so that factorize() may follow.
+  virtual bool is_analyzed_for(const CsrMatrix& matrix) const = 0;
+
+  // analyze (when the pattern is new) + factorize + solve, for one-off systems.
+  Eigen::VectorXd solve_once(const CsrMatrix& matrix, const Eigen::VectorXd& b);
+};
+
+// Known names: "eigen-lu" (Eigen's SparseLU, the reference), "umfpack" (the default), "mumps"
+// (sequential MUMPS), "cholmod" (symmetric positive definite matrices only). Throws on another name,
+// listing these.
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name = "umfpack");
+std::vector<std::string> linear_solver_names();
+
+}  // namespace pc

@@ -1,0 +1,84 @@
+#include "assembly/system_matrix.hpp"
+
+#include <algorithm>
+
+#include "assembly/error.hpp"
+
+namespace pc {
+
+int SystemMatrix::declare(int row_field, int col_field, const CsrMatrix& block) {
+  require(!finalized_, "SystemMatrix: declare() after finalize()");
+  require(row_field >= 0 && row_field < layout_.num_fields() && col_field >= 0 && col_field < layout_.num_fields(),
+          "SystemMatrix: field index out of range");
+  require(block.isCompressed(), "SystemMatrix: blocks must be compressed");
+  require(block.rows() == int(layout_.global_indices(row_field).size()) &&
+              block.cols() == int(layout_.global_indices(col_field).size()),
+          "SystemMatrix: block is ", block.rows(), " x ", block.cols(), " but fields '",
+          layout_.field_name(row_field), "' x '", layout_.field_name(col_field), "' have ",
+          layout_.global_indices(row_field).size(), " x ", layout_.global_indices(col_field).size(), " dofs");
+  Block b{row_field, col_field, int(block.rows()), int(block.cols()), long(block.nonZeros()), {}, {}, {}};
+  b.outer.assign(block.outerIndexPtr(), block.outerIndexPtr() + block.rows() + 1);
+  b.inner.assign(block.innerIndexPtr(), block.innerIndexPtr() + block.nonZeros());
+  blocks_.push_back(std::move(b));
+  return num_blocks() - 1;
+}
+
+void SystemMatrix::finalize() {
+  require(!finalized_, "SystemMatrix: finalize() called twice");
+  const int n = layout_.size();
+  // Column lists per global row, merged over blocks.
+  std::vector<std::vector<int>> columns(n);
+  for (const Block& b : blocks_) {
+    const auto rows = layout_.global_indices(b.row_field);
+    const auto cols = layout_.global_indices(b.col_field);
+    for (int r = 0; r < b.rows; ++r) {
+      if (rows[r] < 0) continue;
+      for (int k = b.outer[r]; k < b.outer[r + 1]; ++k)
+        if (cols[b.inner[k]] >= 0) columns[rows[r]].push_back(cols[b.inner[k]]);
+    }
+  }
+  // Every free dof keeps its diagonal, so that a row no block touches shows as a zero pivot (a clear
+  // solver error) rather than a structurally singular pattern.
+  std::vector<int> outer(n + 1, 0);
+  for (int r = 0; r < n; ++r) {
+    columns[r].push_back(r);
+    std::sort(columns[r].begin(), columns[r].end());
+    columns[r].erase(std::unique(columns[r].begin(), columns[r].end()), columns[r].end());
+    outer[r + 1] = outer[r] + static_cast<int>(columns[r].size());
+  }
+  matrix_.resize(n, n);
+  matrix_.resizeNonZeros(outer[n]);
+  std::copy(outer.begin(), outer.end(), matrix_.outerIndexPtr());
+  for (int r = 0; r < n; ++r) std::copy(columns[r].begin(), columns[r].end(), matrix_.innerIndexPtr() + outer[r]);
+  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + outer[n], 0.0);
+
+  for (Block& b : blocks_) {
+    const auto rows = layout_.global_indices(b.row_field);
+    const auto cols = layout_.global_indices(b.col_field);
+    b.slots.assign(b.nnz, -1);
+    for (int r = 0; r < b.rows; ++r) {
+      if (rows[r] < 0) continue;
+      for (int k = b.outer[r]; k < b.outer[r + 1]; ++k)
+        if (cols[b.inner[k]] >= 0) b.slots[k] = find_slot(matrix_, rows[r], cols[b.inner[k]]);
+    }
+    b.outer = {};
+    b.inner = {};
+  }
+  finalized_ = true;
+}
+
+void SystemMatrix::set_zero() { std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0); }
+
+void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
+  require(finalized_, "SystemMatrix: add() before finalize()");
+  require(handle >= 0 && handle < num_blocks(), "SystemMatrix: unknown block handle ", handle);
+  const Block& b = blocks_[handle];
+  require(block.nonZeros() == b.nnz && block.rows() == b.rows, "SystemMatrix: block ", handle,
+          " changed its pattern since it was declared");
+  const double* values = block.valuePtr();
+  double* target = matrix_.valuePtr();
+  for (long k = 0; k < b.nnz; ++k)
+    if (b.slots[k] >= 0) target[b.slots[k]] += factor * values[k];
+}
+
+}  // namespace pc

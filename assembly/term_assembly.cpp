@@ -1,0 +1,231 @@
+#include "assembly/term_assembly.hpp"
+
+#include <algorithm>
+
+#include "assembly/error.hpp"
+
+namespace pc {
+namespace {
+
+int highest_order(const std::vector<const FESpace*>& spaces) {
+  int order = 1;
+  for (const FESpace* s : spaces) order = std::max(order, s->order());
+  return order;
+}
+
+}  // namespace
+
+TermAssembly::TermAssembly(std::shared_ptr<const Term> term, const std::string& region,
+                           std::vector<const FESpace*> spaces)
+    : TermAssembly(term,
+                   std::make_shared<const RegionGeometry>(spaces.at(0)->mesh(), region,
+                                                          term->quadrature_degree(highest_order(spaces))),
+                   spaces) {}
+
+TermAssembly::TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<const RegionGeometry> geometry,
+                           std::vector<const FESpace*> spaces)
+    : term_(std::move(term)), geometry_(std::move(geometry)), spaces_(std::move(spaces)) {
+  const Term& t = *term_;
+  require(spaces_.size() == t.fields().size(), "term '", t.name(), "' names ", t.fields().size(),
+          " fields but was given ", spaces_.size(), " spaces");
+  for (const FESpace* s : spaces_) require(s != nullptr, "term '", t.name(), "': a field has no space");
+  const Mesh& mesh = spaces_[0]->mesh();
+  for (const FESpace* s : spaces_)
+    require(&s->mesh() == &mesh, "term '", t.name(), "': its fields live on different meshes");
+  require(&geometry_->mesh() == &mesh, "term '", t.name(), "': the region geometry is on another mesh");
+  const Integration expected = t.integration();
+  require(geometry_->integration() == expected, "term '", t.name(), "' integrates over ",
+          expected == Integration::Cells ? "cells" : "faces", " but region '", geometry_->region(), "' is a ",
+          geometry_->integration() == Integration::Cells ? "cell" : "face", " region");
+  for (int e = 0; e < geometry_->num_elements(); ++e)
+    for (int f = 0; f < int(spaces_.size()); ++f)
+      require(spaces_[f]->has_cell(geometry_->cell(e)), "term '", t.name(), "': field '", t.fields()[f].name,
+              "' is not defined on cell ", geometry_->cell(e), " of region '", geometry_->region(), "'");
+
+  // Shape tables for each field, in the cell or on each local face.
+  const int dim = mesh.dim();
+  const int n_faces = num_faces(mesh.cell_shape());
+  tables_.resize(spaces_.size());
+  for (int f = 0; f < int(spaces_.size()); ++f) {
+    const ReferenceElement& element = spaces_[f]->element();
+    tables_[f].resize(n_faces + 1);
+    for (int lf = -1; lf < n_faces; ++lf) {
+      if ((expected == Integration::Cells) != (lf == -1)) continue;
+      ShapeTable& table = tables_[f][lf + 1];
+      if (lf < 0) {
+        for (int i = 0; i < element.num_dofs(); ++i) table.local_dofs.push_back(i);
+      } else {
+        const auto on_face = element.face_dofs(lf);
+        table.local_dofs.assign(on_face.begin(), on_face.end());
+      }
+      const int n = static_cast<int>(table.local_dofs.size());
+      std::vector<double> all_N(element.num_dofs()), all_dN(element.num_dofs() * dim);
+      for (const auto& xi : geometry_->reference_points(lf)) {
+        element.values(xi.data(), all_N.data());
+        element.gradients(xi.data(), all_dN.data());
+        for (int i = 0; i < n; ++i) {
+          table.N.push_back(all_N[table.local_dofs[i]]);
+          if (lf < 0)
+            for (int d = 0; d < dim; ++d) table.dN.push_back(all_dN[table.local_dofs[i] * dim + d]);
+        }
+      }
+    }
+  }
+  build_blocks();
+}
+
+const TermAssembly::ShapeTable& TermAssembly::table(int field, int local_face) const {
+  return tables_[field][local_face + 1];
+}
+
+void TermAssembly::element_dofs(int field, int element, std::vector<int>& dofs) const {
+  const FESpace& space = *spaces_[field];
+  const auto cell_dofs = space.cell_scalar_dofs(geometry_->cell(element));
+  const ShapeTable& t = table(field, geometry_->local_face(element));
+  const int nc = space.num_components();
+  dofs.resize(t.local_dofs.size() * nc);
+  for (int i = 0; i < int(t.local_dofs.size()); ++i)
+    for (int c = 0; c < nc; ++c) dofs[i * nc + c] = space.dof(cell_dofs[t.local_dofs[i]], c);
+}
+
+void TermAssembly::build_blocks() {
+  const auto& couplings = term_->couplings();
+  blocks_.resize(couplings.size());
+  slots_.resize(couplings.size());
+  std::vector<int> rows, cols;
+  for (int k = 0; k < int(couplings.size()); ++k) {
+    const FESpace& test = *spaces_[couplings[k].test];
+    const FESpace& trial = *spaces_[couplings[k].trial];
+    std::vector<Eigen::Triplet<double, int>> entries;
+    for (int e = 0; e < geometry_->num_elements(); ++e) {
+      element_dofs(couplings[k].test, e, rows);
+      element_dofs(couplings[k].trial, e, cols);
+      for (int r : rows)
+        for (int c : cols) entries.emplace_back(r, c, 0.0);
+    }
+    CsrMatrix& block = blocks_[k];
+    block.resize(test.num_dofs(), trial.num_dofs());
+    block.setFromTriplets(entries.begin(), entries.end());
+    block.makeCompressed();
+    std::vector<int>& slots = slots_[k];
+    slots.clear();
+    slots.reserve(entries.size());
+    for (int e = 0; e < geometry_->num_elements(); ++e) {
+      element_dofs(couplings[k].test, e, rows);
+      element_dofs(couplings[k].trial, e, cols);
+      for (int r : rows)
+        for (int c : cols) slots.push_back(find_slot(block, r, c));
+    }
+  }
+}
+
+void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, double time,
+                            std::span<Eigen::VectorXd* const> residuals, bool tangent) {
+  const Term& term = *term_;
+  const int n_fields = static_cast<int>(spaces_.size());
+  const int n_tests = static_cast<int>(term.tests().size());
+  require(int(values.size()) == n_fields, "term '", term.name(), "': ", values.size(), " value vectors for ",
+          n_fields, " fields");
+  require(int(residuals.size()) == n_tests, "term '", term.name(), "': ", residuals.size(),
+          " residual vectors for ", n_tests, " test fields");
+  for (int f = 0; f < n_fields; ++f)
+    require(values[f] != nullptr && values[f]->size() == spaces_[f]->num_dofs(), "term '", term.name(),
+            "': the values of field '", term.fields()[f].name, "' have ",
+            values[f] ? values[f]->size() : 0, " entries, its space has ", spaces_[f]->num_dofs(), " dofs");
+  for (int t = 0; t < n_tests; ++t)
+    require(residuals[t] == nullptr || residuals[t]->size() == spaces_[term.tests()[t]]->num_dofs(), "term '",
+            term.name(), "': residual of '", term.fields()[term.tests()[t]].name, "' has the wrong size");
+  bool want_residual = false;
+  for (auto* r : residuals) want_residual = want_residual || r != nullptr;
+  if (tangent)
+    for (CsrMatrix& b : blocks_) std::fill(b.valuePtr(), b.valuePtr() + b.nonZeros(), 0.0);
+  if (!want_residual && !tangent) return;
+
+  const RegionGeometry& geo = *geometry_;
+  const int dim = geo.mesh().dim();
+  const int nq = geo.num_points();
+  const bool cells = geo.integration() == Integration::Cells;
+  ElementData data;
+  data.dim = dim;
+  data.num_points = nq;
+  data.time = time;
+  data.weights.resize(nq);
+  data.points.resize(nq);
+  if (!cells) data.normals.resize(nq);
+  data.fields.resize(n_fields);
+  LocalSystem local;
+  local.residual.resize(n_tests);
+  local.tangent.resize(term.couplings().size());
+  std::vector<std::vector<int>> dofs(n_fields);
+
+  for (int e = 0; e < geo.num_elements(); ++e) {
+    data.cell = geo.cell(e);
+    data.local_face = geo.local_face(e);
+    for (int q = 0; q < nq; ++q) {
+      data.weights[q] = geo.weight(e, q);
+      data.points[q] = geo.point(e, q);
+      if (!cells) data.normals[q] = geo.normal(e, q);
+    }
+    for (int f = 0; f < n_fields; ++f) {
+      const ShapeTable& t = table(f, data.local_face);
+      ElementData::Field& field = data.fields[f];
+      const int n = static_cast<int>(t.local_dofs.size());
+      const int nc = spaces_[f]->num_components();
+      field.num_shapes = n;
+      field.num_components = nc;
+      field.N = t.N.data();
+      element_dofs(f, e, dofs[f]);
+      field.coefficients.resize(n * nc);
+      for (int a = 0; a < n * nc; ++a) field.coefficients[a] = (*values[f])[dofs[f][a]];
+      field.value.assign(nq * nc, 0.0);
+      for (int q = 0; q < nq; ++q)
+        for (int i = 0; i < n; ++i)
+          for (int c = 0; c < nc; ++c) field.value[q * nc + c] += t.N[q * n + i] * field.coefficients[i * nc + c];
+      if (!cells) continue;
+      // Physical gradients: dN = G dN_ref with G = J^{-T}.
+      field.dN.resize(nq * n * dim);
+      field.grad.assign(nq * nc * dim, 0.0);
+      for (int q = 0; q < nq; ++q) {
+        const double* G = geo.inverse_jacobian_t(e, q);
+        for (int i = 0; i < n; ++i) {
+          const double* ref = &t.dN[(q * n + i) * dim];
+          double* phys = &field.dN[(q * n + i) * dim];
+          for (int d = 0; d < dim; ++d) {
+            double s = 0;
+            for (int k = 0; k < dim; ++k) s += G[d * dim + k] * ref[k];
+            phys[d] = s;
+          }
+          for (int c = 0; c < nc; ++c)
+            for (int d = 0; d < dim; ++d)
+              field.grad[(q * nc + c) * dim + d] += phys[d] * field.coefficients[i * nc + c];
+        }
+      }
+    }
+    for (int ti = 0; ti < n_tests; ++ti)
+      local.residual[ti].setZero(dofs[term.tests()[ti]].size());
+    if (tangent)
+      for (int k = 0; k < int(term.couplings().size()); ++k)
+        local.tangent[k].setZero(dofs[term.couplings()[k].test].size(), dofs[term.couplings()[k].trial].size());
+
+    term.assemble(data, local, want_residual, tangent);
+
+    for (int ti = 0; ti < n_tests; ++ti) {
+      if (residuals[ti] == nullptr) continue;
+      const std::vector<int>& rows = dofs[term.tests()[ti]];
+      for (int a = 0; a < int(rows.size()); ++a) (*residuals[ti])[rows[a]] += local.residual[ti][a];
+    }
+    if (tangent) {
+      for (int k = 0; k < int(term.couplings().size()); ++k) {
+        const Eigen::MatrixXd& K = local.tangent[k];
+        const int rows = static_cast<int>(K.rows()), cols = static_cast<int>(K.cols());
+        const int* slot = slots_[k].data() + size_t(e) * rows * cols;
+        double* target = blocks_[k].valuePtr();
+        for (int r = 0; r < rows; ++r)
+          for (int c = 0; c < cols; ++c) target[slot[r * cols + c]] += K(r, c);
+      }
+    }
+    ++elements_assembled_;
+  }
+}
+
+}  // namespace pc

@@ -1,0 +1,62 @@
+#pragma once
+// A term bound to a region and to the FE spaces of its fields: the engine's element loop. Built once, it
+// holds the shape-function tables at the region's quadrature points, the sparsity pattern of each tangent
+// block (rows: dofs of the test field's space, columns: dofs of the trial field's space) and, for every
+// element, the slots its local entries scatter to, so that assembly writes straight into CSR values.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/fe_space.hpp"
+#include "assembly/region_geometry.hpp"
+#include "assembly/sparse.hpp"
+#include "assembly/term.hpp"
+
+namespace pc {
+
+class TermAssembly {
+ public:
+  // spaces[f] is the space of the term's field f. The geometry's region kind must match the term's
+  // integration, and every element of the region must lie in every space.
+  TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<const RegionGeometry> geometry,
+               std::vector<const FESpace*> spaces);
+  // The same, with a geometry of its own at the degree the term asks for its highest field order.
+  TermAssembly(std::shared_ptr<const Term> term, const std::string& region, std::vector<const FESpace*> spaces);
+
+  const Term& term() const { return *term_; }
+  const RegionGeometry& geometry() const { return *geometry_; }
+  const FESpace& space(int field) const { return *spaces_[field]; }
+  // Tangent block of coupling k, with the values of the last assembly that asked for tangents.
+  const CsrMatrix& block(int k) const { return blocks_[k]; }
+
+  // values[f]: coefficients of field f. Residual blocks are added to residuals[t] (one per test field,
+  // null to skip); tangent blocks are overwritten when tangent is true.
+  void assemble(std::span<const Eigen::VectorXd* const> values, double time,
+                std::span<Eigen::VectorXd* const> residuals, bool tangent);
+
+  // Number of elements assembled so far (lets callers check that a cache avoided an element loop).
+  std::int64_t elements_assembled() const { return elements_assembled_; }
+
+ private:
+  struct ShapeTable {
+    std::vector<int> local_dofs;  // the element's local dofs used (all, or those on the face)
+    std::vector<double> N;        // [q * n + i]
+    std::vector<double> dN;       // reference gradients [(q * n + i) * dim + d]; cells only
+  };
+  const ShapeTable& table(int field, int local_face) const;
+  void element_dofs(int field, int element, std::vector<int>& dofs) const;
+  void build_blocks();
+
+  std::shared_ptr<const Term> term_;
+  std::shared_ptr<const RegionGeometry> geometry_;
+  std::vector<const FESpace*> spaces_;
+  std::vector<std::vector<ShapeTable>> tables_;  // [field][local_face + 1]
+  std::vector<CsrMatrix> blocks_;
+  std::vector<std::vector<int>> slots_;          // [coupling][element * rows * cols + row * cols + col]
+  std::int64_t elements_assembled_ = 0;
+};
+
+}  // namespace pc
