@@ -14,7 +14,8 @@ struct GmshOptions {
 };
 
 // Throws when the file does not exist, gmsh cannot read it, it holds no cells, mixes cell shapes, or
-// has second-order geometry.
+// has second-order geometry. Each call initializes and finalizes gmsh itself: do not call it while the
+// caller's own code holds gmsh initialized.
 Mesh import_gmsh(const std::string& path, const GmshOptions& options = {});
 
 }  // namespace pc

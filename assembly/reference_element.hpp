@@ -35,7 +35,7 @@ class ReferenceElement {
 
   const std::array<double, 3>& dof_point(int i) const { return points_[i]; }
   DofEntity dof_entity(int i) const { return entities_[i]; }
-  // Local dofs whose support meets the face, in increasing local order.
+  // Local dofs whose node lies on the face (the only ones not identically zero there), increasing.
   std::span<const int> face_dofs(int face) const { return face_dofs_[face]; }
 
  private:

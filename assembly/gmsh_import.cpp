@@ -1,0 +1,288 @@
+#include "assembly/gmsh_import.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <mutex>
+#include <unordered_map>
+
+#include "assembly/error.hpp"
+
+namespace pc {
+namespace {
+
+// gmsh keeps its state in process-wide globals, and gmsh 4.8 cannot tell whether it is initialized.
+// Each import therefore runs alone in a session of its own, opened and closed around it; a caller must
+// not hold a gmsh session of its own open while importing.
+std::mutex gmsh_mutex;
+
+class GmshSession {
+ public:
+  GmshSession() { gmsh::initialize(0, nullptr, /*readConfigFiles=*/false); }
+  ~GmshSession() {
+    try {
+      gmsh::finalize();
+    } catch (...) {  // nothing useful can be done about a failure to clean up
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+struct Elements {
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags;
+  std::vector<std::vector<std::size_t>> nodes;
+};
+
+Elements get_elements(int dim, int entity = -1) {
+  Elements e;
+  gmsh::model::mesh::getElements(e.types, e.tags, e.nodes, dim, entity);
+  return e;
+}
+
+struct ElementType {
+  std::string name;
+  int order = 0;
+  int num_nodes = 0;
+  int num_primary_nodes = 0;
+};
+
+ElementType element_type(int type) {
+  ElementType t;
+  int dim = 0;
+  std::vector<double> local_coordinates;
+  gmsh::model::mesh::getElementProperties(type, t.name, dim, t.order, t.num_nodes, local_coordinates,
+                                          t.num_primary_nodes);
+  return t;
+}
+
+// The one cell shape of the elements of the mesh's top dimension.
+Shape cell_shape(const Elements& cells) {
+  std::string names;
+  for (int type : cells.types) names += (names.empty() ? "" : ", ") + element_type(type).name;
+  for (int type : cells.types)
+    require(element_type(type).order == 1, "the mesh has second-order cells (", names,
+            "); only first-order geometry is supported");
+  require(cells.types.size() == 1, "the mesh mixes cell shapes (", names,
+          "); a mesh must have one cell shape");
+  switch (cells.types[0]) {
+    case 2: return Shape::Triangle;
+    case 3: return Shape::Quadrilateral;
+    case 4: return Shape::Tetrahedron;
+    case 5: return Shape::Hexahedron;
+    default: break;
+  }
+  fail("the mesh has cells of type ", names,
+       "; only triangles, quadrilaterals, tetrahedra and hexahedra are supported");
+}
+
+std::string physical_name(int dim, int tag) {
+  std::string name;
+  gmsh::model::getPhysicalName(dim, tag, name);
+  return name.empty() ? "physical_" + std::to_string(tag) : name;
+}
+
+// Signed area of a triangle or quadrilateral (shoelace formula) with 2D coordinates.
+double signed_area(const std::vector<double>& coordinates, std::span<const int> polygon) {
+  double twice_area = 0;
+  for (size_t k = 0; k < polygon.size(); ++k) {
+    const int a = polygon[k], b = polygon[(k + 1) % polygon.size()];
+    twice_area += coordinates[2 * a] * coordinates[2 * b + 1] - coordinates[2 * b] * coordinates[2 * a + 1];
+  }
+  return twice_area / 2;
+}
+
+// Faces of the mesh by sorted node tuple, each named by the first cell that owns it.
+class FaceFinder {
+ public:
+  explicit FaceFinder(const Mesh& mesh) {
+    for (int c = 0; c < mesh.num_cells(); ++c)
+      for (int f = 0; f < num_faces(mesh.cell_shape()); ++f)
+        faces_.push_back({key(mesh.face_nodes({c, f})), {c, f}});
+    std::stable_sort(faces_.begin(), faces_.end(),
+                     [](const Entry& a, const Entry& b) { return a.first < b.first; });
+  }
+
+  // The face with these nodes, or a FaceRef with cell -1.
+  FaceRef find(std::vector<int> nodes) const {
+    const auto wanted = key(std::move(nodes));
+    const auto it = std::lower_bound(faces_.begin(), faces_.end(), wanted,
+                                     [](const Entry& e, const std::vector<int>& k) { return e.first < k; });
+    return it != faces_.end() && it->first == wanted ? it->second : FaceRef{};
+  }
+
+ private:
+  using Entry = std::pair<std::vector<int>, FaceRef>;
+  static std::vector<int> key(std::vector<int> nodes) {
+    std::sort(nodes.begin(), nodes.end());
+    return nodes;
+  }
+  std::vector<Entry> faces_;
+};
+
+void add_face_regions(Mesh& mesh, int face_dim, const std::unordered_map<std::size_t, int>& node_index) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, face_dim);
+  if (groups.empty()) return;
+  const FaceFinder finder(mesh);
+  for (const auto& [dim, group] : groups) {
+    const std::string name = physical_name(dim, group);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, group, entities);
+    std::vector<FaceRef> faces;
+    for (int entity : entities) {
+      const Elements elements = get_elements(dim, entity);
+      for (size_t t = 0; t < elements.types.size(); ++t) {
+        const ElementType type = element_type(elements.types[t]);
+        for (size_t e = 0; e < elements.tags[t].size(); ++e) {
+          // Only the corner nodes identify a face (higher-order nodes follow them).
+          const std::size_t* gmsh_nodes = elements.nodes[t].data() + e * type.num_nodes;
+          std::vector<int> nodes;
+          for (int k = 0; k < type.num_primary_nodes; ++k) {
+            const auto it = node_index.find(gmsh_nodes[k]);
+            nodes.push_back(it == node_index.end() ? -1 : it->second);
+          }
+          const FaceRef face = finder.find(nodes);
+          if (face.cell < 0) {
+            std::string tags;
+            for (int k = 0; k < type.num_primary_nodes; ++k) tags += " " + std::to_string(gmsh_nodes[k]);
+            fail("element ", elements.tags[t][e], " of physical group '", name, "' (gmsh nodes", tags,
+                 ") is not a face of any cell");
+          }
+          faces.push_back(face);
+        }
+      }
+    }
+    mesh.add_face_region(name, std::move(faces));
+  }
+}
+
+// Throws the error gmsh logged last, in the form of gmsh's own exceptions (a std::string).
+void throw_logged_error() {
+  std::string error;
+  gmsh::logger::getLastError(error);
+  if (!error.empty()) throw error;
+}
+
+Mesh read_model(const std::string& path, const GmshOptions& options) {
+  gmsh::option::setNumber("General.Terminal", options.verbosity > 0 ? 1 : 0);
+  gmsh::option::setNumber("General.Verbosity", options.verbosity);
+  // gmsh logs errors instead of throwing them: an exception thrown from inside its .geo parser leaves
+  // the parser's state corrupt, and every later parse in the process fails.
+  gmsh::option::setNumber("General.AbortOnError", 0);
+  gmsh::open(path);
+  throw_logged_error();
+
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char ch) { return std::tolower(ch); });
+  if (extension == ".geo") {
+    // Scale whatever factor the script sets for itself.
+    double factor = 1;
+    gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
+    gmsh::option::setNumber("Mesh.MeshSizeFactor", factor * options.mesh_size_factor);
+    gmsh::model::mesh::generate(gmsh::model::getDimension());
+    throw_logged_error();
+  }
+
+  int top = 3;
+  Elements cells = get_elements(top);
+  if (cells.types.empty()) cells = get_elements(--top);
+  require(!cells.types.empty(),
+          "the mesh has no 2D or 3D cells (a .msh file written with physical groups keeps only the "
+          "elements of those groups: give the domain a physical group, or set Mesh.SaveAll)");
+  const Shape shape = cell_shape(cells);
+  const std::vector<std::size_t>& cell_tags = cells.tags[0];
+  const std::vector<std::size_t>& cell_nodes = cells.nodes[0];
+
+  std::vector<std::size_t> node_tags;
+  std::vector<double> node_xyz, parametric;
+  gmsh::model::mesh::getNodes(node_tags, node_xyz, parametric, -1, -1, false, false);
+  std::unordered_map<std::size_t, std::size_t> position;
+  for (size_t n = 0; n < node_tags.size(); ++n) position.emplace(node_tags[n], n);
+
+  // Keep the nodes of the cells only, numbered in increasing gmsh tag order.
+  std::vector<std::size_t> used(cell_nodes.begin(), cell_nodes.end());
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::unordered_map<std::size_t, int> node_index;
+  std::vector<double> coordinates;
+  coordinates.reserve(used.size() * top);
+  double plane_z = 0;  // the z of every node of a 2D mesh, dropped from its coordinates
+  for (size_t n = 0; n < used.size(); ++n) {
+    const auto it = position.find(used[n]);
+    require(it != position.end(), "cells refer to node ", used[n], ", which the file does not define");
+    node_index.emplace(used[n], int(n));
+    const double* xyz = node_xyz.data() + 3 * it->second;
+    coordinates.insert(coordinates.end(), xyz, xyz + top);
+    if (top == 2) {
+      if (n == 0) plane_z = xyz[2];
+      require(xyz[2] == plane_z, "the 2D cells do not lie in a plane z = ", plane_z, " (node ", used[n],
+              " has z = ", xyz[2], "); surface meshes in 3D are not supported");
+    }
+  }
+
+  const int per_cell = num_vertices(shape);
+  std::vector<int> connectivity(cell_nodes.size());
+  for (size_t k = 0; k < cell_nodes.size(); ++k) connectivity[k] = node_index.at(cell_nodes[k]);
+  if (top == 2) {
+    // gmsh orients a surface's elements along the surface's normal, which is -z when its boundary loop
+    // runs clockwise. Such cells are correct, merely seen from the other side: reverse their vertex order
+    // (keeping the first vertex) so that every cell is positively oriented in the xy plane.
+    for (size_t c = 0; c < cell_tags.size(); ++c) {
+      const std::span<int> polygon(connectivity.data() + c * per_cell, per_cell);
+      if (signed_area(coordinates, polygon) < 0) std::reverse(polygon.begin() + 1, polygon.end());
+    }
+  }
+
+  Mesh mesh(top, shape, std::move(coordinates), std::move(connectivity));
+
+  std::unordered_map<std::size_t, int> cell_index;
+  for (size_t c = 0; c < cell_tags.size(); ++c) cell_index.emplace(cell_tags[c], int(c));
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, top);
+  for (const auto& [dim, group] : groups) {
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, group, entities);
+    std::vector<int> region;
+    for (int entity : entities)
+      for (const auto& tags : get_elements(dim, entity).tags)
+        for (std::size_t tag : tags) region.push_back(cell_index.at(tag));
+    mesh.add_cell_region(physical_name(dim, group), std::move(region));
+  }
+  add_face_regions(mesh, top - 1, node_index);
+  return mesh;
+}
+
+}  // namespace
+
+Mesh import_gmsh(const std::string& path, const GmshOptions& options) {
+  require(std::filesystem::exists(path), "gmsh: cannot open '", path, "': no such file");
+  require(std::filesystem::is_regular_file(path), "gmsh: cannot open '", path, "': not a regular file");
+  require(options.mesh_size_factor > 0, "gmsh: mesh_size_factor must be positive, got ",
+          options.mesh_size_factor);
+  const std::lock_guard lock(gmsh_mutex);
+  const GmshSession session;
+  // gmsh 4.8 throws its error messages as std::string.
+  try {
+    return read_model(path, options);
+  } catch (const Error& e) {
+    fail("gmsh: '", path, "': ", e.what());
+  } catch (const std::string& e) {
+    fail("gmsh: cannot read '", path, "': ", e);
+  } catch (const std::exception& e) {
+    fail("gmsh: cannot read '", path, "': ", e.what());
+  } catch (...) {
+    std::string last;
+    try {
+      gmsh::logger::getLastError(last);
+    } catch (...) {  // the original failure is the one worth reporting
+    }
+    fail("gmsh: cannot read '", path, "': ", last.empty() ? "unknown error" : last);
+  }
+}
+
+}  // namespace pc

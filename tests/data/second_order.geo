@@ -1,0 +1,12 @@
+// A unit square meshed with second-order (6-node) triangles, which the importer rejects.
+Mesh.ElementOrder = 2;
+Point(1) = {0, 0, 0, 0.5};
+Point(2) = {1, 0, 0, 0.5};
+Point(3) = {1, 1, 0, 0.5};
+Point(4) = {0, 1, 0, 0.5};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
