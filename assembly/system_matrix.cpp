@@ -69,6 +69,12 @@ void SystemMatrix::finalize() {
 
 void SystemMatrix::set_zero() { std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0); }
 
+void SystemMatrix::set_values(const std::vector<double>& values) {
+  require(finalized_ && long(values.size()) == long(matrix_.nonZeros()), "SystemMatrix: set_values() with ",
+          values.size(), " values for ", matrix_.nonZeros(), " non-zeros");
+  std::copy(values.begin(), values.end(), matrix_.valuePtr());
+}
+
 void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
   require(finalized_, "SystemMatrix: add() before finalize()");
   require(handle >= 0 && handle < num_blocks(), "SystemMatrix: unknown block handle ", handle);

@@ -23,6 +23,9 @@ class SystemMatrix {
   // matrix += factor * block (the block must have the pattern it was declared with).
   void add(int handle, const CsrMatrix& block, double factor = 1.0);
   const CsrMatrix& matrix() const { return matrix_; }
+  // The values in pattern order, e.g. to keep a partial sum and restore it without re-adding blocks.
+  std::vector<double> values() const { return {matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros()}; }
+  void set_values(const std::vector<double>& values);
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
 
  private:

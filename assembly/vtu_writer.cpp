@@ -9,6 +9,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "assembly/atomic_file.hpp"
 #include "assembly/error.hpp"
 
 namespace pc {
@@ -81,30 +82,6 @@ std::uint8_t vtk_cell_type(Shape shape) {
     case Shape::Hexahedron: return 12;
   }
   fail("VtuWriter: no VTK cell type for shape ", static_cast<int>(shape));
-}
-
-// Writes to path + ".tmp" and renames it over path, so that an interrupted run never leaves a
-// truncated file where a reader (or a restarted run) expects a complete one.
-template <class WriteContent>
-void write_atomically(const std::string& path, const char* what, WriteContent write_content) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    require(bool(out), what, ": cannot open '", temporary, "' for writing (does the directory of '", path,
-            "' exist and is it writable?)");
-    write_content(out);
-    out.close();
-    if (!out) {
-      std::remove(temporary.c_str());
-      fail(what, ": writing '", temporary, "' failed (disk full?)");
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::remove(temporary.c_str());
-    fail(what, ": cannot rename '", temporary, "' to '", path, "': ", error.message());
-  }
 }
 
 void require_unique_name(const std::string& kind, const std::string& name, auto const& arrays) {

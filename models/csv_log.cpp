@@ -1,0 +1,71 @@
+#include "models/csv_log.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "assembly/atomic_file.hpp"
+#include "assembly/error.hpp"
+
+namespace pc {
+namespace {
+
+// Checked before any file is opened, so that a bad call leaves existing files untouched.
+void check_columns(const std::string& path, const std::vector<std::string>& columns) {
+  require(!columns.empty(), "CSV '", path, "': no columns");
+  // Quoting is not supported: names stay plain so that every CSV reader splits them the same way.
+  for (const std::string& name : columns)
+    require(!name.empty() && name.find_first_of(",\"\r\n") == std::string::npos, "CSV '", path,
+            "': column name '", name, "' is empty or contains a comma, quote or line break");
+}
+
+void check_row(const std::string& path, size_t num_columns, const std::vector<double>& values) {
+  require(values.size() == num_columns, "CSV '", path, "': a row has ", values.size(), " values for ", num_columns,
+          " columns");
+}
+
+void write_header(std::ostream& out, const std::vector<std::string>& columns) {
+  for (size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
+  out << '\n';
+}
+
+void write_row(std::ostream& out, const std::vector<double>& values) {
+  char text[32];
+  for (size_t i = 0; i < values.size(); ++i) {
+    std::snprintf(text, sizeof text, "%.17g", values[i]);
+    out << (i ? "," : "") << text;
+  }
+  out << '\n';
+}
+
+}  // namespace
+
+CsvLog::CsvLog(std::string path, std::vector<std::string> columns)
+    : path_(std::move(path)), columns_(std::move(columns)) {
+  check_columns(path_, columns_);
+  out_.open(path_, std::ios::trunc);
+  require(bool(out_), "CsvLog: cannot open '", path_, "' for writing (does its directory exist?)");
+  write_header(out_, columns_);
+  out_.flush();
+  require(bool(out_), "CsvLog: writing the header of '", path_, "' failed (disk full?)");
+}
+
+void CsvLog::row(const std::vector<double>& values) {
+  check_row(path_, columns_.size(), values);
+  write_row(out_, values);
+  out_.flush();
+  require(bool(out_), "CsvLog: writing row ", rows_written_ + 1, " of '", path_, "' failed (disk full?)");
+  ++rows_written_;
+}
+
+void write_csv(const std::string& path, const std::vector<std::string>& columns,
+               const std::vector<std::vector<double>>& rows) {
+  check_columns(path, columns);
+  for (const std::vector<double>& row : rows) check_row(path, columns.size(), row);
+
+  write_atomically(path, "write_csv", [&](std::ostream& out) {
+    write_header(out, columns);
+    for (const std::vector<double>& row : rows) write_row(out, row);
+  });
+}
+
+}  // namespace pc

@@ -1,0 +1,544 @@
+#include "models/model.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "assembly/error.hpp"
+
+namespace pc {
+
+struct Model::Field {
+  FieldKind kind = FieldKind::Data;
+  std::shared_ptr<const FESpace> space;
+  mutable Eigen::VectorXd values;  // an affine field's are recomputed on access
+  std::uint64_t version = 0;       // data fields: when they last changed
+  std::string base;                // affine fields
+  double factor = 1;
+  std::vector<std::string> history;
+  std::vector<double> coefficients;
+};
+
+// A brick term bound to the mesh, with the model's meaning of each of its couplings.
+struct Model::BoundTerm {
+  std::unique_ptr<TermAssembly> assembly;
+  std::vector<std::string> field_names;      // per term field
+  std::vector<std::string> test_unknowns;    // per test
+  std::vector<std::string> trial_fields;     // per coupling
+  std::vector<std::string> trial_unknowns;   // per coupling: the unknown whose columns it fills
+  std::vector<std::string> uncoupled_data;   // data fields read but not differentiated (R0 depends on them)
+};
+
+struct Model::BrickState {
+  std::vector<BoundTerm> terms;
+  std::map<std::string, std::uint64_t> constant_versions;  // as last read by update()
+  std::int64_t retired_elements = 0;                       // element loops of replaced assemblies
+  bool tangent_valid = false;                              // linear bricks
+  bool r0_valid = false;
+  double r0_time = 0;
+  std::map<std::string, std::uint64_t> r0_data_versions;
+  std::map<std::string, Eigen::VectorXd> r0;  // per test unknown
+};
+
+struct Model::System {
+  DofLayout layout;
+  std::unique_ptr<SystemMatrix> matrix;
+  std::vector<std::vector<std::vector<int>>> handles;  // [brick][term][coupling]
+  std::vector<double> linear_values;
+  std::uint64_t linear_stamp = ~std::uint64_t(0);
+};
+
+namespace {
+
+std::string join(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out.empty() ? "none" : out;
+}
+
+}  // namespace
+
+Model::Model(std::shared_ptr<const Mesh> mesh) : mesh_(std::move(mesh)) {
+  require(mesh_ != nullptr, "Model: no mesh");
+}
+
+Model::~Model() = default;
+
+Model::Field& Model::field(const std::string& name) {
+  return const_cast<Field&>(static_cast<const Model*>(this)->field(name));
+}
+
+const Model::Field& Model::field(const std::string& name) const {
+  const auto it = fields_.find(name);
+  if (it == fields_.end()) fail("Model: unknown field '", name, "' (the model has: ", join(field_names()), ")");
+  return *it->second;
+}
+
+std::vector<std::string> Model::field_names() const {
+  std::vector<std::string> names;
+  for (const auto& [name, f] : fields_) names.push_back(name);
+  return names;
+}
+
+void Model::add_unknown(const std::string& name, std::shared_ptr<const FESpace> space) {
+  require(!finalized_, "Model: add_unknown('", name, "') after finalize()");
+  require(!has_field(name), "Model: field '", name, "' exists already");
+  require(space && &space->mesh() == mesh_.get(), "Model: the space of '", name, "' is not on the model's mesh");
+  auto f = std::make_unique<Field>();
+  f->kind = FieldKind::Unknown;
+  f->values = Eigen::VectorXd::Zero(space->num_dofs());
+  f->space = std::move(space);
+  fields_[name] = std::move(f);
+  unknown_names_.push_back(name);
+}
+
+void Model::add_data_field(const std::string& name, std::shared_ptr<const FESpace> space, Eigen::VectorXd values) {
+  require(!finalized_, "Model: add_data_field('", name, "') after finalize()");
+  require(!has_field(name), "Model: field '", name, "' exists already");
+  require(space && &space->mesh() == mesh_.get(), "Model: the space of '", name, "' is not on the model's mesh");
+  if (values.size() == 0) values = Eigen::VectorXd::Zero(space->num_dofs());
+  require(values.size() == space->num_dofs(), "Model: data field '", name, "' has ", values.size(),
+          " values, its space has ", space->num_dofs(), " dofs");
+  require(values.allFinite(), "Model: data field '", name, "' has non-finite values");
+  auto f = std::make_unique<Field>();
+  f->kind = FieldKind::Data;
+  f->space = std::move(space);
+  f->values = std::move(values);
+  f->version = ++clock_;
+  fields_[name] = std::move(f);
+}
+
+void Model::add_affine_field(const std::string& name, const std::string& base, std::vector<std::string> history) {
+  require(!finalized_, "Model: add_affine_field('", name, "') after finalize()");
+  require(!has_field(name), "Model: field '", name, "' exists already");
+  const Field& b = field(base);
+  require(b.kind == FieldKind::Unknown, "Model: affine field '", name, "' must be based on an unknown; '", base,
+          "' is not one");
+  for (const std::string& h : history) {
+    const Field& hf = field(h);
+    require(hf.kind == FieldKind::Data && hf.space == b.space, "Model: history '", h, "' of affine field '", name,
+            "' must be a data field on the space of '", base, "'");
+  }
+  auto f = std::make_unique<Field>();
+  f->kind = FieldKind::Affine;
+  f->space = b.space;
+  f->base = base;
+  f->history = std::move(history);
+  f->coefficients.assign(f->history.size(), 0.0);
+  fields_[name] = std::move(f);
+}
+
+void Model::set_affine(const std::string& name, double factor, std::vector<double> history_coefficients) {
+  Field& f = field(name);
+  require(f.kind == FieldKind::Affine, "Model: '", name, "' is not an affine field");
+  require(history_coefficients.size() == f.history.size(), "Model: affine field '", name, "' has ",
+          f.history.size(), " history fields, got ", history_coefficients.size(), " coefficients");
+  require(std::isfinite(factor), "Model: affine factor of '", name, "' is not finite: ", factor);
+  if (f.factor != factor) ++linear_version_;  // the cached sum of linear blocks holds the old factor
+  f.factor = factor;
+  f.coefficients = std::move(history_coefficients);
+}
+
+double Model::affine_factor(const std::string& name) const {
+  const Field& f = field(name);
+  return f.kind == FieldKind::Affine ? f.factor : 1.0;
+}
+
+FieldKind Model::field_kind(const std::string& name) const { return field(name).kind; }
+const FESpace& Model::space(const std::string& name) const { return *field(name).space; }
+std::shared_ptr<const FESpace> Model::space_ptr(const std::string& name) const { return field(name).space; }
+
+const Eigen::VectorXd& Model::values(const std::string& name) const {
+  const Field& f = field(name);
+  if (f.kind == FieldKind::Affine) {
+    f.values = f.factor * field(f.base).values;
+    for (size_t i = 0; i < f.history.size(); ++i)
+      if (f.coefficients[i] != 0) f.values += f.coefficients[i] * field(f.history[i]).values;
+  }
+  return f.values;
+}
+
+void Model::set_values(const std::string& name, const Eigen::VectorXd& values) {
+  Field& f = field(name);
+  require(f.kind != FieldKind::Affine, "Model: affine field '", name, "' is computed, it cannot be set");
+  require(values.size() == f.space->num_dofs(), "Model: '", name, "' has ", f.space->num_dofs(), " dofs, got ",
+          values.size(), " values");
+  require(values.allFinite(), "Model: non-finite values given for '", name, "'");
+  f.values = values;
+  if (f.kind == FieldKind::Data) f.version = ++clock_;
+}
+
+void Model::set_constant(const std::string& name, Eigen::MatrixXd value) {
+  require(value.size() > 0, "Model: constant '", name, "' is empty");
+  require(value.allFinite(), "Model: constant '", name, "' has non-finite entries");
+  constants_[name] = {std::move(value), ++clock_};
+}
+
+void Model::set_constant(const std::string& name, double value) {
+  require(std::isfinite(value), "Model: constant '", name, "' is not finite: ", value);
+  set_constant(name, Eigen::MatrixXd::Constant(1, 1, value));
+}
+
+const Eigen::MatrixXd& Model::constant(const std::string& name) const {
+  const auto it = constants_.find(name);
+  if (it == constants_.end()) {
+    std::vector<std::string> known;
+    for (const auto& [n, v] : constants_) known.push_back(n);
+    fail("Model: unknown constant '", name, "' (the model has: ", join(known), ")");
+  }
+  return it->second.first;
+}
+
+void Model::check_brick(const Brick& brick) const {
+  const std::string who = "brick '" + brick.name() + "'";
+  for (const BrickTerm& bt : brick.terms()) {
+    const Term& term = *bt.term;
+    require(mesh_->has_region(bt.region), who, ": unknown region '", bt.region, "' (the mesh has: ",
+            join(mesh_->region_names()), ")");
+    const bool cells = mesh_->region_kind(bt.region) == RegionKind::Cells;
+    require(cells == (term.integration() == Integration::Cells), who, ": term '", term.name(), "' integrates over ",
+            cells ? "faces" : "cells", " but region '", bt.region, "' is a ", cells ? "cell" : "face", " region");
+    for (const FieldUse& use : term.fields())
+      require(has_field(use.name), who, ": unknown field '", use.name, "' (the model has: ", join(field_names()), ")");
+    for (int t : term.tests())
+      require(field_kind(term.fields()[t].name) == FieldKind::Unknown, who, ": tests field '", term.fields()[t].name,
+              "', which is not an unknown");
+    for (const Coupling& c : term.couplings())
+      require(field_kind(term.fields()[c.trial].name) != FieldKind::Data, who, ": differentiates data field '",
+              term.fields()[c.trial].name, "'; only unknowns and affine fields have tangents");
+  }
+  for (const DirichletCondition& d : brick.dirichlet_conditions()) {
+    require(has_field(d.unknown) && field_kind(d.unknown) == FieldKind::Unknown, who, ": Dirichlet condition on '",
+            d.unknown, "', which is not an unknown");
+    require(mesh_->has_region(d.region), who, ": unknown region '", d.region, "' (the mesh has: ",
+            join(mesh_->region_names()), ")");
+    for (int c : d.components)
+      require(c >= 0 && c < space(d.unknown).num_components(), who, ": component ", c, " of '", d.unknown,
+              "' does not exist");
+  }
+}
+
+int Model::add_brick(std::shared_ptr<Brick> brick) {
+  require(brick != nullptr, "Model: add_brick(nullptr)");
+  require(!finalized_, "Model: add_brick('", brick->name(), "') after finalize()");
+  brick->update(*this);
+  check_brick(*brick);
+  bricks_.push_back(std::move(brick));
+  brick_states_.push_back(std::make_unique<BrickState>());
+  for (const std::string& name : bricks_.back()->data())
+    brick_states_.back()->constant_versions[name] = constants_.at(name).second;
+  return static_cast<int>(bricks_.size()) - 1;
+}
+
+void Model::bind_brick(int index) {
+  const Brick& brick = *bricks_[index];
+  BrickState& state = *brick_states_[index];
+  for (const BoundTerm& bt : state.terms) state.retired_elements += bt.assembly->elements_assembled();
+  std::vector<BoundTerm> bound;
+  for (const BrickTerm& bt : brick.terms()) {
+    BoundTerm b;
+    std::vector<const FESpace*> spaces;
+    for (const FieldUse& use : bt.term->fields()) {
+      b.field_names.push_back(use.name);
+      spaces.push_back(&space(use.name));
+    }
+    for (int t : bt.term->tests()) b.test_unknowns.push_back(b.field_names[t]);
+    std::set<std::string> coupled;
+    for (const Coupling& c : bt.term->couplings()) {
+      const std::string& trial = b.field_names[c.trial];
+      b.trial_fields.push_back(trial);
+      b.trial_unknowns.push_back(field_kind(trial) == FieldKind::Affine ? field(trial).base : trial);
+      coupled.insert(trial);
+    }
+    for (const std::string& name : b.field_names)
+      if (!coupled.count(name) && field_kind(name) == FieldKind::Data) b.uncoupled_data.push_back(name);
+    b.assembly = std::make_unique<TermAssembly>(bt.term, bt.region, spaces);
+    // A rebuilt term must keep its pattern: the system matrix was declared with it.
+    if (bound.size() < state.terms.size()) {
+      const BoundTerm& old = state.terms[bound.size()];
+      for (size_t k = 0; k < b.trial_fields.size(); ++k)
+        require(old.assembly->block(int(k)).nonZeros() == b.assembly->block(int(k)).nonZeros(), "brick '",
+                brick.name(), "' changed the sparsity of its terms in update()");
+    }
+    bound.push_back(std::move(b));
+  }
+  require(state.terms.empty() || state.terms.size() == bound.size(), "brick '", brick.name(),
+          "' changed its number of terms in update()");
+  state.terms = std::move(bound);
+  state.tangent_valid = false;
+  state.r0_valid = false;
+}
+
+void Model::finalize() {
+  require(!finalized_, "Model: finalize() called twice");
+  require(!unknown_names_.empty(), "Model: no unknown field");
+  // Every field must be read by some brick (directly, or as the base or history of a field that is).
+  std::set<std::string> used;
+  for (const auto& brick : bricks_)
+    for (const BrickTerm& bt : brick->terms())
+      for (const FieldUse& use : bt.term->fields()) used.insert(use.name);
+  for (const auto& [name, f] : fields_)
+    if (f->kind == FieldKind::Affine && used.count(name)) {
+      used.insert(f->base);
+      used.insert(f->history.begin(), f->history.end());
+    }
+  for (const auto& [name, f] : fields_)
+    require(used.count(name) > 0, "Model: field '", name,
+            "' is used by no brick; remove it or add the brick that needs it");
+
+  for (int b = 0; b < int(bricks_.size()); ++b) bind_brick(b);
+  for (const auto& brick : bricks_)
+    for (const DirichletCondition& d : brick->dirichlet_conditions()) {
+      const FESpace& s = space(d.unknown);
+      std::vector<int>& dofs = constrained_[d.unknown];
+      for (int scalar : s.scalar_dofs_on(d.region))
+        for (int c = 0; c < s.num_components(); ++c)
+          if (d.components.empty() || std::count(d.components.begin(), d.components.end(), c))
+            dofs.push_back(s.dof(scalar, c));
+      dirichlet_.push_back(d);
+    }
+  for (auto& [name, dofs] : constrained_) {
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  }
+  finalized_ = true;
+  apply_dirichlet();
+}
+
+void Model::apply_dirichlet() {
+  require(finalized_, "Model: apply_dirichlet() before finalize()");
+  for (const DirichletCondition& d : dirichlet_) {
+    Field& f = field(d.unknown);
+    const FESpace& s = *f.space;
+    double value[3];
+    for (int scalar : s.scalar_dofs_on(d.region)) {
+      d.value(s.scalar_dof_point(scalar).data(), time_, value);
+      for (int c = 0; c < s.num_components(); ++c) {
+        if (!d.components.empty() && !std::count(d.components.begin(), d.components.end(), c)) continue;
+        require(std::isfinite(value[c]), "Dirichlet value of '", d.unknown, "' on '", d.region,
+                "' is not finite at t = ", time_);
+        f.values[s.dof(scalar, c)] = value[c];
+      }
+    }
+  }
+}
+
+void Model::set_frozen(const std::vector<std::string>& unknowns) {
+  for (const std::string& u : unknowns)
+    require(has_field(u) && field_kind(u) == FieldKind::Unknown, "Model: cannot freeze '", u,
+            "': not an unknown");
+  frozen_ = unknowns;
+  std::sort(frozen_.begin(), frozen_.end());
+}
+
+Model::System& Model::system() {
+  require(finalized_, "Model: assemble() before finalize()");
+  auto& slot = systems_[frozen_];
+  if (slot) return *slot;
+  slot = std::make_unique<System>();
+  System& s = *slot;
+  for (const std::string& u : unknown_names_) {
+    std::vector<int> constrained;
+    if (std::count(frozen_.begin(), frozen_.end(), u)) {
+      constrained.resize(space(u).num_dofs());
+      for (int d = 0; d < int(constrained.size()); ++d) constrained[d] = d;
+    } else if (constrained_.count(u)) {
+      constrained = constrained_.at(u);
+    }
+    s.layout.add_field(u, space(u).num_dofs(), constrained);
+  }
+  s.matrix = std::make_unique<SystemMatrix>(s.layout);
+  s.handles.resize(bricks_.size());
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    for (const BoundTerm& bt : brick_states_[b]->terms) {
+      std::vector<int> handles;
+      for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
+        const Coupling& c = bt.assembly->term().couplings()[k];
+        handles.push_back(s.matrix->declare(s.layout.field_index(bt.field_names[c.test]),
+                                            s.layout.field_index(bt.trial_unknowns[k]), bt.assembly->block(int(k))));
+      }
+      s.handles[b].push_back(std::move(handles));
+    }
+  }
+  s.matrix->finalize();
+  return s;
+}
+
+const DofLayout& Model::layout() const {
+  const auto it = systems_.find(frozen_);
+  require(it != systems_.end(), "Model: layout() before the first assemble()");
+  return it->second->layout;
+}
+
+const CsrMatrix& Model::jacobian() const {
+  const auto it = systems_.find(frozen_);
+  require(it != systems_.end(), "Model: jacobian() before assemble(true)");
+  return it->second->matrix->matrix();
+}
+
+const Eigen::VectorXd& Model::field_residual(const std::string& unknown) const {
+  const auto it = field_residuals_.find(unknown);
+  require(it != field_residuals_.end(), "Model: no residual for '", unknown, "' (assemble first)");
+  return it->second;
+}
+
+// Re-reads the constants of a brick whose data changed, and re-binds its terms if update() replaced them.
+void Model::refresh_brick(int index) {
+  Brick& brick = *bricks_[index];
+  BrickState& state = *brick_states_[index];
+  bool changed = false;
+  for (auto& [name, seen] : state.constant_versions) {
+    const std::uint64_t now = constants_.at(name).second;
+    changed = changed || now != seen;
+    seen = now;
+  }
+  if (!changed) return;
+  brick.update(*this);
+  const auto terms = brick.terms();
+  bool same_terms = terms.size() == state.terms.size();
+  for (size_t t = 0; same_terms && t < terms.size(); ++t)
+    same_terms = &state.terms[t].assembly->term() == terms[t].term.get();
+  if (same_terms) {
+    state.tangent_valid = false;
+    state.r0_valid = false;
+  } else {
+    bind_brick(index);
+  }
+}
+
+void Model::refresh_linear_sum(System& s) {
+  s.matrix->set_zero();
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    if (!bricks_[b]->linear()) continue;
+    const BrickState& state = *brick_states_[b];
+    for (size_t t = 0; t < state.terms.size(); ++t) {
+      const BoundTerm& bt = state.terms[t];
+      for (size_t k = 0; k < bt.trial_fields.size(); ++k)
+        s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
+    }
+  }
+  s.linear_values = s.matrix->values();
+}
+
+void Model::assemble(bool tangent) {
+  System& s = system();
+  for (const std::string& u : unknown_names_) field_residuals_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
+
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    refresh_brick(b);
+    BrickState& state = *brick_states_[b];
+    const Brick& brick = *bricks_[b];
+    for (BoundTerm& bt : state.terms) {
+      std::vector<const Eigen::VectorXd*> values;
+      for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
+      std::vector<Eigen::VectorXd*> outputs;
+      if (!brick.linear()) {
+        for (const std::string& u : bt.test_unknowns) outputs.push_back(&field_residuals_.at(u));
+        bt.assembly->assemble(values, time_, outputs, tangent);
+        continue;
+      }
+      outputs.assign(bt.test_unknowns.size(), nullptr);
+      if (!state.tangent_valid) bt.assembly->assemble(values, time_, outputs, true);
+    }
+    if (!brick.linear()) continue;
+    if (!state.tangent_valid) {
+      state.tangent_valid = true;
+      ++linear_version_;
+    }
+
+    // R0: the residual with every coupled field at zero (sources, and terms of uncoupled data fields).
+    bool r0_current = state.r0_valid && (!brick.time_dependent() || state.r0_time == time_);
+    for (const auto& [name, seen] : state.r0_data_versions) r0_current = r0_current && field(name).version == seen;
+    if (!r0_current) {
+      state.r0.clear();
+      state.r0_data_versions.clear();
+      for (BoundTerm& bt : state.terms) {
+        std::map<std::string, Eigen::VectorXd> zeros;
+        std::vector<const Eigen::VectorXd*> values;
+        for (const std::string& name : bt.field_names) {
+          const bool coupled = std::count(bt.trial_fields.begin(), bt.trial_fields.end(), name) > 0;
+          if (!coupled) {
+            values.push_back(&this->values(name));
+            continue;
+          }
+          zeros[name] = Eigen::VectorXd::Zero(space(name).num_dofs());
+          values.push_back(&zeros[name]);
+        }
+        std::vector<Eigen::VectorXd*> outputs;
+        for (const std::string& u : bt.test_unknowns) {
+          auto [it, inserted] = state.r0.try_emplace(u, Eigen::VectorXd::Zero(space(u).num_dofs()));
+          outputs.push_back(&it->second);
+        }
+        bt.assembly->assemble(values, time_, outputs, false);
+        for (const std::string& name : bt.uncoupled_data) state.r0_data_versions[name] = field(name).version;
+      }
+      state.r0_valid = true;
+      state.r0_time = time_;
+    }
+    for (const auto& [u, r0] : state.r0) field_residuals_.at(u) += r0;
+    for (const BoundTerm& bt : state.terms)
+      for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
+        const Coupling& c = bt.assembly->term().couplings()[k];
+        field_residuals_.at(bt.field_names[c.test]) += bt.assembly->block(int(k)) * this->values(bt.trial_fields[k]);
+      }
+  }
+
+  if (tangent) {
+    if (s.linear_stamp != linear_version_) {
+      refresh_linear_sum(s);
+      s.linear_stamp = linear_version_;
+    }
+    s.matrix->set_values(s.linear_values);
+    for (int b = 0; b < int(bricks_.size()); ++b) {
+      if (bricks_[b]->linear()) continue;
+      const BrickState& state = *brick_states_[b];
+      for (size_t t = 0; t < state.terms.size(); ++t) {
+        const BoundTerm& bt = state.terms[t];
+        for (size_t k = 0; k < bt.trial_fields.size(); ++k)
+          s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
+      }
+    }
+  }
+
+  residual_ = Eigen::VectorXd::Zero(s.layout.size());
+  for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
+}
+
+Eigen::VectorXd Model::free_values() const {
+  const DofLayout& l = layout();
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(l.size());
+  for (const std::string& u : unknown_names_) l.add_to_global(l.field_index(u), field(u).values, x);
+  return x;
+}
+
+void Model::add_to_free_values(const Eigen::VectorXd& step) {
+  const DofLayout& l = layout();
+  for (const std::string& u : unknown_names_) l.add_from_global(l.field_index(u), step, field(u).values);
+}
+
+void Model::invalidate_caches() {
+  for (auto& state : brick_states_) {
+    state->tangent_valid = false;
+    state->r0_valid = false;
+  }
+  ++linear_version_;
+}
+
+std::int64_t Model::elements_assembled(int brick) const {
+  require(brick >= 0 && brick < int(bricks_.size()), "Model: brick index ", brick, " out of range");
+  const BrickState& state = *brick_states_[brick];
+  std::int64_t n = state.retired_elements;
+  for (const BoundTerm& bt : state.terms) n += bt.assembly->elements_assembled();
+  return n;
+}
+
+void Model::add_diagnostic(const std::string& name, std::function<double(const Model&)> evaluate) {
+  diagnostics_.emplace_back(name, std::move(evaluate));
+}
+
+std::map<std::string, double> Model::diagnostics() const {
+  std::map<std::string, double> out;
+  for (const auto& [name, evaluate] : diagnostics_) out[name] = evaluate(*this);
+  return out;
+}
+
+}  // namespace pc

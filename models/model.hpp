@@ -1,0 +1,145 @@
+#pragma once
+// The Model: named fields, named constants and a stack of bricks, assembled into one monolithic system
+// on the free dofs of its unknowns (GetFEM's model object).
+//
+// Fields are unknowns (solved for), data fields (history, given fields) and affine fields
+// `name = factor * base + sum c_i history_i` of an unknown, whose factor and coefficients the time scheme
+// sets (u = k v + u_prev, a = v / k - v_prev / k). A brick's tangent with respect to an affine field is added into the
+// base unknown's columns times the factor, so a new step size never re-runs an element loop.
+//
+// Caching: a linear brick's tangent blocks are assembled once per change of the constants it reads; its
+// residual is sum_k K_k x_k + R0, a mat-vec, where R0 (the residual with the coupled fields at zero) is
+// refreshed when a data field it reads or, for time-dependent bricks, the time changes. The sum of the
+// linear blocks with the scheme's factors is kept, so each Newton iteration only re-assembles the
+// nonlinear bricks (for the paper, those on the contact boundary).
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/dof_layout.hpp"
+#include "assembly/fe_space.hpp"
+#include "assembly/system_matrix.hpp"
+#include "assembly/term_assembly.hpp"
+#include "bricks/brick.hpp"
+
+namespace pc {
+
+enum class FieldKind { Unknown, Data, Affine };
+
+class Model : public DataView {
+ public:
+  explicit Model(std::shared_ptr<const Mesh> mesh);
+  ~Model() override;
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  const Mesh& mesh() const { return *mesh_; }
+  std::shared_ptr<const Mesh> mesh_ptr() const { return mesh_; }
+
+  // ---- fields -----------------------------------------------------------------------------------
+  void add_unknown(const std::string& name, std::shared_ptr<const FESpace> space);
+  // Initial values default to zero.
+  void add_data_field(const std::string& name, std::shared_ptr<const FESpace> space, Eigen::VectorXd values = {});
+  // name = factor * base + sum_i c_i * history_i, with base an unknown and history data fields of the
+  // same space (e.g. u = k v + u_prev). Factor 1 and coefficients 0 until set_affine.
+  void add_affine_field(const std::string& name, const std::string& base, std::vector<std::string> history = {});
+  void set_affine(const std::string& name, double factor, std::vector<double> history_coefficients);
+  double affine_factor(const std::string& name) const;
+
+  bool has_field(const std::string& name) const { return fields_.count(name) > 0; }
+  FieldKind field_kind(const std::string& name) const;
+  const FESpace& space(const std::string& name) const;
+  std::shared_ptr<const FESpace> space_ptr(const std::string& name) const;
+  // Current values (an affine field's are computed on the fly).
+  const Eigen::VectorXd& values(const std::string& name) const;
+  // Sets an unknown's or a data field's values (a data field's change refreshes what reads it).
+  void set_values(const std::string& name, const Eigen::VectorXd& values);
+  std::vector<std::string> unknowns() const { return unknown_names_; }
+  std::vector<std::string> field_names() const;
+
+  // ---- constants --------------------------------------------------------------------------------
+  void set_constant(const std::string& name, Eigen::MatrixXd value);
+  void set_constant(const std::string& name, double value);
+  bool has_constant(const std::string& name) const { return constants_.count(name) > 0; }
+  const Eigen::MatrixXd& constant(const std::string& name) const override;
+
+  // ---- bricks -----------------------------------------------------------------------------------
+  // Checks that every field, datum and region the brick names exists and that it differentiates
+  // only unknowns and affine fields. Returns the brick's index.
+  int add_brick(std::shared_ptr<Brick> brick);
+  const std::vector<std::shared_ptr<Brick>>& bricks() const { return bricks_; }
+  // Binds every term to its region (pattern, geometry), applies the Dirichlet bricks and refuses a
+  // field that no brick uses.
+  void finalize();
+  bool finalized() const { return finalized_; }
+
+  // ---- time -------------------------------------------------------------------------------------
+  double time() const { return time_; }
+  void set_time(double t) { time_ = t; }
+  // Writes the Dirichlet values at the current time into the unknowns' constrained dofs.
+  void apply_dirichlet();
+
+  // ---- the system -------------------------------------------------------------------------------
+  // Unknowns excluded from the system keep their values (e.g. v while the initial potential is found).
+  void set_frozen(const std::vector<std::string>& unknowns);
+  const DofLayout& layout() const;
+  // Assembles the residual on the free dofs and, if asked, the Jacobian (SystemMatrix::matrix()).
+  void assemble(bool tangent);
+  const Eigen::VectorXd& residual() const { return residual_; }
+  const CsrMatrix& jacobian() const;
+  // Residual of one unknown in its field numbering (all dofs, constrained ones included): reactions.
+  const Eigen::VectorXd& field_residual(const std::string& unknown) const;
+  // Unknowns on free dofs, and their update x <- x + step.
+  Eigen::VectorXd free_values() const;
+  void add_to_free_values(const Eigen::VectorXd& step);
+
+  // Drops every cache, so that the next assemble() re-runs every element loop (to compare with cached
+  // assembly, or after changing something the model cannot see).
+  void invalidate_caches();
+
+  // ---- introspection (tests, reports) ------------------------------------------------------------
+  // Element loops run so far by each brick's terms: lets tests see what a cache avoided.
+  std::int64_t elements_assembled(int brick) const;
+  // Named diagnostics evaluated after each solve (e.g. contact points in compression).
+  void add_diagnostic(const std::string& name, std::function<double(const Model&)> evaluate);
+  std::map<std::string, double> diagnostics() const;
+
+ private:
+  struct Field;
+  struct BoundTerm;
+  struct BrickState;
+  struct System;
+
+  Field& field(const std::string& name);
+  const Field& field(const std::string& name) const;
+  void check_brick(const Brick& brick) const;
+  void bind_brick(int index);
+  System& system();
+  void refresh_brick(int index);
+  void refresh_linear_sum(System& s);
+
+  std::shared_ptr<const Mesh> mesh_;
+  std::map<std::string, std::unique_ptr<Field>> fields_;
+  std::vector<std::string> unknown_names_;
+  std::map<std::string, std::pair<Eigen::MatrixXd, std::uint64_t>> constants_;
+  std::vector<std::shared_ptr<Brick>> bricks_;
+  std::vector<std::unique_ptr<BrickState>> brick_states_;
+  std::map<std::string, std::vector<int>> constrained_;  // per unknown: Dirichlet dofs
+  std::vector<DirichletCondition> dirichlet_;
+  std::vector<std::string> frozen_;
+  std::map<std::vector<std::string>, std::unique_ptr<System>> systems_;
+  std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
+  std::map<std::string, Eigen::VectorXd> field_residuals_;
+  Eigen::VectorXd residual_;
+  std::uint64_t clock_ = 0;           // version source for constants and data fields
+  std::uint64_t linear_version_ = 1;  // changes when a linear block or an affine factor changes
+  double time_ = 0;
+  bool finalized_ = false;
+};
+
+}  // namespace pc

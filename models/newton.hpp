@@ -1,0 +1,71 @@
+#pragma once
+// Monolithic Newton on all active unknowns of a Model (the paper's (29)-(30): velocity and potential
+// together), with backtracking line search and convergence judged per block, since the mechanical and
+// electric residuals have different units.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/linear_solver.hpp"
+#include "models/model.hpp"
+
+namespace pc {
+
+struct NewtonOptions {
+  int max_iterations = 25;
+  // Block b has converged when ||R_b|| <= max(absolute, relative * ||R_b|| at the first iteration).
+  double relative_tolerance = 1e-9;
+  double absolute_tolerance = 1e-14;
+  std::map<std::string, double> absolute_tolerances;  // per unknown, overriding absolute_tolerance
+  // ... or when a full step changed every block by at most this much relative to the block's size.
+  double increment_tolerance = 1e-12;
+  bool line_search = true;
+  int max_backtracks = 12;
+  double backtrack_factor = 0.5;
+  double armijo = 1e-4;
+  // The scaled residual growing by this factor over the first one means divergence.
+  double divergence_factor = 1e12;
+  std::string linear_solver = "umfpack";
+};
+
+enum class NewtonOutcome { Converged, MaxIterations, Diverged, SingularTangent };
+std::string to_string(NewtonOutcome outcome);
+
+struct NewtonIteration {
+  std::vector<double> residual_norms;   // per block, after the iteration (iteration 0: before any step)
+  std::vector<double> increment_norms;  // per block, of the accepted step
+  double step_length = 0;
+  int backtracks = 0;
+};
+
+struct NewtonReport {
+  NewtonOutcome outcome = NewtonOutcome::MaxIterations;
+  int iterations = 0;
+  std::vector<std::string> blocks;       // the unknowns, in block order
+  std::vector<NewtonIteration> history;  // history[0] is the initial residual
+  double assembly_seconds = 0, analyze_seconds = 0, factorize_seconds = 0, solve_seconds = 0, total_seconds = 0;
+  std::map<std::string, double> diagnostics;  // the model's, at the end
+  std::string message;
+  bool converged() const { return outcome == NewtonOutcome::Converged; }
+};
+
+class NewtonSolver {
+ public:
+  explicit NewtonSolver(NewtonOptions options = {});
+  const NewtonOptions& options() const { return options_; }
+  NewtonOptions& options() { return options_; }
+  // Solves R(x) = 0 from the model's current unknowns; the model is left at the last iterate.
+  NewtonReport solve(Model& model);
+  // Symbolic analyses done so far (one per sparsity pattern).
+  int analyses() const { return analyses_; }
+
+ private:
+  NewtonOptions options_;
+  std::unique_ptr<LinearSolver> linear_;
+  const CsrMatrix* analyzed_matrix_ = nullptr;
+  long analyzed_nonzeros_ = -1;
+  int analyses_ = 0;
+};
+
+}  // namespace pc

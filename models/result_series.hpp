@@ -1,0 +1,31 @@
+#pragma once
+// A time series of VTU files and the PVD collection that ParaView opens as one animated data set. The
+// collection is rewritten after every step, so a run that is interrupted (or still running) leaves a
+// readable series of every step finished so far, each at its real time.
+#include <map>
+#include <string>
+#include <utility>
+
+#include "assembly/vtu_writer.hpp"
+
+namespace pc {
+
+class ResultSeries {
+ public:
+  // Creates the directory (and its parents) now, so that a bad path fails before the run starts. The
+  // files are <directory>/<basename>_<step, 6 digits>.vtu and <directory>/<basename>.pvd.
+  ResultSeries(const std::string& directory, std::string basename);
+
+  // Writes the step's VTU file, then the collection of every step written so far. Writing a step again
+  // (e.g. after a retried step) replaces its file and its time. Returns the path of the VTU file.
+  std::string write(int step, double time, const VtuWriter& writer);
+
+  std::string pvd_path() const;
+
+ private:
+  std::string directory_;
+  std::string basename_;
+  std::map<int, std::pair<double, std::string>> steps_;  // step -> (time, file name relative to the .pvd)
+};
+
+}  // namespace pc

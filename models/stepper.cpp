@@ -1,0 +1,109 @@
+#include "models/stepper.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "assembly/error.hpp"
+
+namespace pc {
+namespace {
+
+std::map<std::string, Eigen::VectorXd> save_unknowns(const Model& model) {
+  std::map<std::string, Eigen::VectorXd> saved;
+  for (const std::string& u : model.unknowns()) saved[u] = model.values(u);
+  return saved;
+}
+
+void restore_unknowns(Model& model, const std::map<std::string, Eigen::VectorXd>& saved) {
+  for (const auto& [name, values] : saved) model.set_values(name, values);
+}
+
+}  // namespace
+
+Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
+  const StepperOptions& o = options_;
+  require(std::isfinite(o.start) && std::isfinite(o.end) && o.end > o.start, "time span: end (", o.end,
+          ") must be finite and after start (", o.start, ")");
+  require(std::isfinite(o.step) && o.step > 0, "time step must be positive and finite, got ", o.step);
+  require(o.cutback_factor > 0 && o.cutback_factor < 1, "cutback_factor must be in (0, 1), got ", o.cutback_factor);
+  require(o.growth_factor >= 1, "growth_factor must be >= 1, got ", o.growth_factor);
+  require(o.output_every >= 1, "output_every must be >= 1, got ", o.output_every);
+  if (options_.min_step <= 0) options_.min_step = o.step * 1e-6;
+}
+
+RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, const StepperCallbacks& callbacks) {
+  const auto start = std::chrono::steady_clock::now();
+  RunSummary summary;
+  const StepperOptions& o = options_;
+  model.set_time(o.start);
+  model.apply_dirichlet();
+
+  StepRecord record;
+  record.time = o.start;
+  if (o.initial_potential && model.has_field(o.potential) && model.field_kind(o.potential) == FieldKind::Unknown) {
+    // phi_0 from the electric equation at u = u_0, v = v_0 (all mechanical unknowns frozen).
+    std::vector<std::string> frozen;
+    for (const std::string& u : model.unknowns())
+      if (u != o.potential) frozen.push_back(u);
+    scheme.freeze_displacement(model);
+    model.set_frozen(frozen);
+    record.newton = newton.solve(model);
+    model.set_frozen({});
+    if (!record.newton.converged()) {
+      summary.message = "the initial potential did not converge: " + record.newton.message;
+      return summary;
+    }
+  }
+  if (callbacks.on_output) callbacks.on_output(model, record);
+
+  const double tiny = 1e-12 * (o.end - o.start);
+  double t = o.start, dt = o.step;
+  int successes = 0;
+  while (t < o.end - tiny) {
+    const double attempt = std::min(dt, o.end - t);
+    const auto saved = save_unknowns(model);
+    scheme.begin_step(model, attempt);
+    model.set_time(t + attempt);
+    if (o.prediction == Prediction::Zero)
+      model.set_values(scheme.fields().velocity, Eigen::VectorXd::Zero(model.space(scheme.fields().velocity).num_dofs()));
+    model.apply_dirichlet();
+    NewtonReport report = newton.solve(model);
+    summary.newton_iterations_total += report.iterations;
+    if (!report.converged()) {
+      restore_unknowns(model, saved);
+      model.set_time(t);
+      ++record.cutbacks;
+      ++summary.cutbacks;
+      successes = 0;
+      dt = attempt * o.cutback_factor;
+      if (dt < o.min_step) {
+        summary.message = message("step from t = ", t, " failed (", to_string(report.outcome), ": ", report.message,
+                                  ") and the step would fall below the floor ", o.min_step);
+        break;
+      }
+      continue;
+    }
+    scheme.end_step(model, attempt);
+    t += attempt;
+    ++summary.steps;
+    summary.newton_iterations_max_per_step = std::max(summary.newton_iterations_max_per_step, report.iterations);
+    record.step = summary.steps;
+    record.time = t;
+    record.dt = attempt;
+    record.newton = std::move(report);
+    if (callbacks.on_step) callbacks.on_step(model, record);
+    const bool last = t >= o.end - tiny;
+    if (callbacks.on_output && (record.step % o.output_every == 0 || last)) callbacks.on_output(model, record);
+    record.cutbacks = 0;
+    if (++successes >= o.successes_before_growth && dt < o.step) {
+      dt = std::min(o.step, dt * o.growth_factor);
+      successes = 0;
+    }
+  }
+  summary.completed = t >= o.end - tiny;
+  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace pc

@@ -1,0 +1,66 @@
+#pragma once
+// The time loop: one Newton solve per step, step cut-back on failure (down to a floor), regrowth toward
+// the nominal step after successes, a progress callback after every step and an output callback every N
+// steps (and at the start and the end), so that a long run writes its results as it goes.
+#include <functional>
+#include <string>
+
+#include "models/newton.hpp"
+#include "models/time_scheme.hpp"
+
+namespace pc {
+
+enum class Prediction {
+  Zero,      // v = 0 at the start of each step, as in the paper
+  Previous,  // v = v_{n-1}
+};
+
+struct StepperOptions {
+  double start = 0;
+  double end = 1;
+  double step = 0.1;
+  double cutback_factor = 0.5;       // a failed step is retried this much smaller ...
+  double min_step = 0;               // ... down to this floor (0: step * 1e-6)
+  double growth_factor = 2;          // after `successes_before_growth` good steps, grow back toward `step`
+  int successes_before_growth = 3;
+  int output_every = 1;              // output callback every N accepted steps (and at the start and the end)
+  Prediction prediction = Prediction::Zero;
+  bool initial_potential = true;     // solve the electric equation at t = start with u = u0 (the paper's phi_0)
+  std::string potential = "phi";
+};
+
+struct StepRecord {
+  int step = 0;  // accepted steps so far (0: the initial state)
+  double time = 0;
+  double dt = 0;
+  int cutbacks = 0;  // failed attempts before this step was accepted
+  NewtonReport newton;
+};
+
+struct RunSummary {
+  bool completed = false;
+  int steps = 0;
+  int newton_iterations_total = 0;
+  int newton_iterations_max_per_step = 0;
+  int cutbacks = 0;
+  double wall_seconds = 0;
+  std::string message;
+};
+
+struct StepperCallbacks {
+  std::function<void(const Model&, const StepRecord&)> on_step;    // after each accepted step
+  std::function<void(const Model&, const StepRecord&)> on_output;  // at output steps
+};
+
+class Stepper {
+ public:
+  explicit Stepper(StepperOptions options);
+  const StepperOptions& options() const { return options_; }
+  // Runs from options.start to options.end. The model must be finalized and the scheme attached.
+  RunSummary run(Model& model, TimeScheme& scheme, NewtonSolver& newton, const StepperCallbacks& callbacks = {});
+
+ private:
+  StepperOptions options_;
+};
+
+}  // namespace pc

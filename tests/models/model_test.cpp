@@ -1,0 +1,170 @@
+// The Model's contract: caching of linear bricks (a new step size or a changed datum re-runs only what it
+// must), cached and forced assembly agree, a linear model converges in one Newton iteration, and bad
+// input is refused with a message naming the field, region or datum.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "assembly/error.hpp"
+#include "assembly/mesh_generators.hpp"
+#include "bricks/dirichlet_brick.hpp"
+#include "bricks/elasticity_brick.hpp"
+#include "bricks/inertia_brick.hpp"
+#include "bricks/permittivity_brick.hpp"
+#include "bricks/piezoelectric_brick.hpp"
+#include "bricks/source_bricks.hpp"
+#include "bricks/viscosity_brick.hpp"
+#include "models/model.hpp"
+#include "models/newton.hpp"
+#include "models/time_scheme.hpp"
+#include "support/piezo_material.hpp"
+
+namespace pc {
+namespace {
+
+using ::testing::HasSubstr;
+
+struct Bulk {
+  std::shared_ptr<const Mesh> mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
+  std::unique_ptr<Model> model = std::make_unique<Model>(mesh);
+  BackwardEuler scheme;
+  int inertia = -1, viscosity = -1, elasticity = -1, piezo = -1, permittivity = -1, traction = -1;
+
+  Bulk() {
+    Model& m = *model;
+    const auto tensors = testing::scaled_pzt5h();
+    m.add_unknown("v", std::make_shared<const FESpace>(mesh, 1, 2));
+    m.add_unknown("phi", std::make_shared<const FESpace>(mesh, 1, 1));
+    scheme.attach(m, true);
+    m.set_constant("rho", 2.0);
+    m.set_constant("A", tensors.A);
+    m.set_constant("B", tensors.B);
+    m.set_constant("E", tensors.E);
+    m.set_constant("beta", tensors.beta);
+    inertia = m.add_brick(std::make_shared<InertiaBrick>());
+    viscosity = m.add_brick(std::make_shared<ViscosityBrick>());
+    elasticity = m.add_brick(std::make_shared<ElasticityBrick>());
+    piezo = m.add_brick(std::make_shared<PiezoelectricCouplingBrick>());
+    permittivity = m.add_brick(std::make_shared<PermittivityBrick>());
+    traction = m.add_brick(std::make_shared<TractionBrick>(std::vector<double>{0.0, -1.0}, "top"));
+    m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", "left")));
+    m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("phi", "top")));
+    m.finalize();
+  }
+
+  std::vector<std::int64_t> loops() const {
+    std::vector<std::int64_t> n;
+    for (int b = 0; b < int(model->bricks().size()); ++b) n.push_back(model->elements_assembled(b));
+    return n;
+  }
+};
+
+Eigen::MatrixXd dense(const CsrMatrix& m) { return Eigen::MatrixXd(m); }
+
+TEST(Model, ALinearModelConvergesInOneNewtonIteration) {
+  Bulk bulk;
+  bulk.scheme.begin_step(*bulk.model, 0.01);
+  NewtonSolver newton;
+  const NewtonReport report = newton.solve(*bulk.model);
+  EXPECT_TRUE(report.converged()) << report.message;
+  EXPECT_EQ(report.iterations, 1);
+  EXPECT_GT(bulk.model->values("v").norm(), 0.0);
+}
+
+TEST(Model, ChangingTheTimeStepRunsNoElementLoopOfACachedBrick) {
+  Bulk bulk;
+  bulk.scheme.begin_step(*bulk.model, 0.01);
+  bulk.model->assemble(true);
+  const auto before = bulk.loops();
+  const Eigen::MatrixXd J1 = dense(bulk.model->jacobian());
+  bulk.scheme.begin_step(*bulk.model, 0.002);
+  bulk.model->assemble(true);
+  EXPECT_EQ(bulk.loops(), before);
+  // ... and yet the Jacobian follows the new factors: J = M / k + C_A + k C_B + couplings.
+  const Eigen::MatrixXd J2 = dense(bulk.model->jacobian());
+  EXPECT_GT((J1 - J2).norm(), 1e-3 * J1.norm());
+  bulk.model->invalidate_caches();
+  bulk.model->assemble(true);
+  EXPECT_LT((dense(bulk.model->jacobian()) - J2).norm(), 1e-14 * J2.norm());
+}
+
+TEST(Model, ChangingADatumInvalidatesOnlyTheBricksThatReadIt) {
+  Bulk bulk;
+  bulk.scheme.begin_step(*bulk.model, 0.01);
+  bulk.model->assemble(true);
+  const auto before = bulk.loops();
+  bulk.model->set_constant("B", 2 * bulk.model->constant("B"));
+  bulk.model->assemble(true);
+  const auto after = bulk.loops();
+  for (int b = 0; b < int(before.size()); ++b) {
+    if (b == bulk.elasticity)
+      EXPECT_GT(after[b], before[b]) << "the elasticity brick reads B";
+    else
+      EXPECT_EQ(after[b], before[b]) << "brick " << bulk.model->bricks()[b]->name() << " does not read B";
+  }
+}
+
+TEST(Model, CachedAndForcedAssemblyAreIdentical) {
+  Bulk bulk;
+  bulk.scheme.begin_step(*bulk.model, 0.01);
+  Eigen::VectorXd v = Eigen::VectorXd::Random(bulk.model->space("v").num_dofs());
+  bulk.model->set_values("v", v);
+  bulk.model->apply_dirichlet();
+  bulk.model->assemble(true);
+  bulk.model->set_values("phi", Eigen::VectorXd::Random(bulk.model->space("phi").num_dofs()));
+  bulk.model->apply_dirichlet();
+  bulk.model->assemble(true);  // cached: mat-vec residual, summed linear blocks
+  const Eigen::VectorXd cached_residual = bulk.model->residual();
+  const Eigen::MatrixXd cached_jacobian = dense(bulk.model->jacobian());
+  bulk.model->invalidate_caches();
+  bulk.model->assemble(true);
+  EXPECT_LT((bulk.model->residual() - cached_residual).norm(), 1e-13 * cached_residual.norm());
+  EXPECT_LT((dense(bulk.model->jacobian()) - cached_jacobian).norm(), 1e-14 * cached_jacobian.norm());
+}
+
+TEST(Model, RejectsBadInputNamingWhatIsWrong) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Triangle));
+  auto expect_error = [](auto&& action, const std::string& fragment) {
+    try {
+      action();
+      ADD_FAILURE() << "expected an error mentioning '" << fragment << "'";
+    } catch (const Error& e) {
+      EXPECT_THAT(e.what(), HasSubstr(fragment));
+    }
+  };
+  auto fresh = [&] {
+    auto m = std::make_unique<Model>(mesh);
+    m->add_unknown("v", std::make_shared<const FESpace>(mesh, 1, 2));
+    return m;
+  };
+  {
+    auto m = fresh();
+    m->set_constant("A", testing::scaled_pzt5h().A);
+    expect_error([&] { m->add_brick(std::make_shared<ViscosityBrick>("all", "A", "w")); }, "'w'");
+    expect_error([&] { m->add_brick(std::make_shared<ViscosityBrick>("body", "A")); }, "'body'");
+    expect_error([&] { m->add_brick(std::make_shared<ViscosityBrick>("all", "C")); }, "'C'");
+    expect_error([&] { m->add_brick(std::make_shared<TractionBrick>(std::vector<double>{0, 1}, "all")); }, "'all'");
+  }
+  {
+    auto m = fresh();
+    m->set_constant("A", Eigen::MatrixXd::Identity(2, 2));
+    expect_error([&] { m->add_brick(std::make_shared<ViscosityBrick>()); }, "'A'");
+    m->set_constant("B", Eigen::MatrixXd{{1, 0, 0}, {0, -1, 0}, {0, 0, 1}});
+    expect_error([&] { m->add_brick(std::make_shared<ElasticityBrick>("all", "B", "v", "v")); }, "'B'");
+    m->set_constant("rho", -3.0);
+    m->add_affine_field("a", "v");
+    expect_error([&] { m->add_brick(std::make_shared<InertiaBrick>()); }, "rho");
+    expect_error([&] { m->set_constant("nan", std::nan("")); }, "'nan'");
+  }
+  {
+    auto m = fresh();
+    m->add_unknown("phi", std::make_shared<const FESpace>(mesh, 1, 1));
+    m->set_constant("A", testing::scaled_pzt5h().A);
+    m->add_brick(std::make_shared<ViscosityBrick>());
+    expect_error([&] { m->finalize(); }, "'phi'");
+  }
+}
+
+}  // namespace
+}  // namespace pc

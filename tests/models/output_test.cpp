@@ -1,0 +1,422 @@
+// Output of a run: the VTU/PVD result series and the CSV tables are read back as text; the derived
+// piezoelectric fields are checked on linear fields, for which the cell values are exact.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include "assembly/error.hpp"
+#include "assembly/mesh_generators.hpp"
+#include "bricks/voigt.hpp"
+#include "models/boundary_table.hpp"
+#include "models/csv_log.hpp"
+#include "models/model.hpp"
+#include "models/piezo_fields.hpp"
+#include "models/result_series.hpp"
+
+namespace pc {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> read_lines(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<double> parse_row(const std::string& line) {
+  std::vector<double> values;
+  std::stringstream fields(line);
+  for (std::string field; std::getline(fields, field, ',');) values.push_back(std::strtod(field.c_str(), nullptr));
+  return values;
+}
+
+// (time, file) of every DataSet of a .pvd, in file order; the document must be complete.
+std::vector<std::pair<double, std::string>> read_pvd(const fs::path& path) {
+  const std::string text = read_text(path);
+  EXPECT_NE(text.find("</VTKFile>"), std::string::npos) << "incomplete collection " << path;
+  const std::regex dataset("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
+  std::vector<std::pair<double, std::string>> steps;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), dataset); it != std::sregex_iterator(); ++it)
+    steps.emplace_back(std::strtod((*it)[1].str().c_str(), nullptr), (*it)[2].str());
+  return steps;
+}
+
+template <class Call>
+void expect_error_mentioning(Call call, const std::vector<std::string>& parts) {
+  try {
+    call();
+    ADD_FAILURE() << "expected pc::Error";
+  } catch (const Error& error) {
+    const std::string what = error.what();
+    for (const std::string& part : parts) EXPECT_NE(what.find(part), std::string::npos) << what;
+  }
+}
+
+class OutputTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 message("piezocontact_output_", ::getpid(), "_",
+                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  fs::path directory_;
+};
+
+// ---- result series ------------------------------------------------------------------------------
+
+TEST_F(OutputTest, ResultSeriesKeepsAValidCollectionOfExactlyTheWrittenSteps) {
+  const Mesh mesh = rectangle_mesh({0, 0}, {1, 1}, 2, 2);
+  VtuWriter writer(mesh);
+  writer.add_cell_data("id", 1, std::vector<double>(mesh.num_cells(), 1.0));
+  const fs::path run = directory_ / "nested" / "run";  // created by the series
+  ResultSeries series(run.string(), "body");
+  EXPECT_TRUE(fs::is_directory(run));
+  EXPECT_EQ(series.pvd_path(), (run / "body.pvd").string());
+
+  const std::vector<int> steps = {0, 5, 10, 123456};
+  const std::vector<std::string> names = {"body_000000.vtu", "body_000005.vtu", "body_000010.vtu",
+                                          "body_123456.vtu"};
+  const std::vector<double> times = {0.0, 0.1, 0.1 + 0.2, 1.0 / 3.0};
+  for (size_t k = 0; k < steps.size(); ++k) {
+    EXPECT_EQ(series.write(steps[k], times[k], writer), (run / names[k]).string());
+    // After every write the collection lists exactly the steps so far, with their exact times.
+    const auto listed = read_pvd(series.pvd_path());
+    ASSERT_EQ(listed.size(), k + 1);
+    for (size_t j = 0; j <= k; ++j) {
+      EXPECT_EQ(listed[j].first, times[j]);
+      EXPECT_EQ(listed[j].second, names[j]);
+      EXPECT_TRUE(fs::exists(run / names[j]));
+    }
+  }
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(run)) {
+    EXPECT_NE(entry.path().extension(), ".tmp");
+    ++files;
+  }
+  EXPECT_EQ(files, int(steps.size()) + 1);
+}
+
+TEST_F(OutputTest, ResultSeriesRewritingAStepReplacesItsTime) {
+  const Mesh mesh = rectangle_mesh({0, 0}, {1, 1}, 1, 1);
+  const VtuWriter writer(mesh);
+  ResultSeries series(directory_.string(), "body");
+  series.write(0, 0.0, writer);
+  series.write(1, 0.5, writer);
+  series.write(1, 0.25, writer);
+  const auto listed = read_pvd(series.pvd_path());
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[1].first, 0.25);
+}
+
+TEST_F(OutputTest, ResultSeriesRefusesBadArgumentsNamingThePath) {
+  std::ofstream(directory_ / "blocker") << "a file where a directory should go";
+  const std::string impossible = (directory_ / "blocker" / "run").string();
+  expect_error_mentioning([&] { ResultSeries(impossible, "body"); }, {impossible});
+
+  const Mesh mesh = rectangle_mesh({0, 0}, {1, 1}, 1, 1);
+  const VtuWriter writer(mesh);
+  ResultSeries series(directory_.string(), "body");
+  expect_error_mentioning([&] { series.write(-1, 0.0, writer); }, {"body.pvd", "-1"});
+  expect_error_mentioning([&] { series.write(0, std::nan(""), writer); }, {"body.pvd", "not finite"});
+}
+
+// ---- CSV ----------------------------------------------------------------------------------------
+
+TEST_F(OutputTest, CsvLogRowsAreOnDiskAtOnceAndReadBackExactly) {
+  const fs::path path = directory_ / "log.csv";
+  std::ofstream(path) << "stale content\nfrom an earlier run\n";
+  CsvLog log(path.string(), {"t", "value", "ratio"});
+  const std::vector<std::vector<double>> rows = {
+      {0.0, 0.1 + 0.2, 1.0 / 3.0}, {1e-300, -2.5e17, std::sqrt(2.0)}, {3.0, 4.0, 5.0}};
+  for (size_t k = 0; k < rows.size(); ++k) {
+    log.row(rows[k]);
+    // Read while the log is still open: every finished row is already in the file.
+    const auto lines = read_lines(path);
+    ASSERT_EQ(lines.size(), k + 2);
+    EXPECT_EQ(lines[0], "t,value,ratio");
+    for (size_t j = 0; j <= k; ++j) EXPECT_EQ(parse_row(lines[j + 1]), rows[j]);
+  }
+  EXPECT_EQ(log.rows_written(), 3);
+  EXPECT_EQ(parse_row(read_lines(path)[1])[1], 0.1 + 0.2);
+  EXPECT_NE(parse_row(read_lines(path)[1])[1], 0.3);
+}
+
+TEST_F(OutputTest, CsvLogWrongValueCountThrowsNamingFileAndCounts) {
+  const std::string path = (directory_ / "log.csv").string();
+  CsvLog log(path, {"a", "b"});
+  log.row({1, 2});
+  expect_error_mentioning([&] { log.row({1, 2, 3}); }, {path, "3 values", "2 columns"});
+  expect_error_mentioning([&] { log.row({}); }, {path, "0 values", "2 columns"});
+  EXPECT_EQ(read_lines(path).size(), 2u);  // the header and the one good row
+  EXPECT_EQ(log.rows_written(), 1);
+}
+
+TEST_F(OutputTest, CsvColumnNamesMustBePlain) {
+  const std::string path = (directory_ / "log.csv").string();
+  expect_error_mentioning([&] { CsvLog(path, {"a", "b,c"}); }, {path, "b,c"});
+  expect_error_mentioning([&] { CsvLog(path, {}); }, {path, "no columns"});
+  EXPECT_FALSE(fs::exists(path));
+}
+
+TEST_F(OutputTest, WriteCsvWritesTheWholeTableAtomically) {
+  const fs::path path = directory_ / "table.csv";
+  write_csv(path.string(), {"x", "y"}, {{0.1, 0.2}, {0.1 + 0.2, -1}});
+  const auto lines = read_lines(path);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "x,y");
+  EXPECT_EQ(parse_row(lines[2]), (std::vector<double>{0.1 + 0.2, -1}));
+  EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
+
+  // A bad table leaves the previous file as it was.
+  expect_error_mentioning([&] { write_csv(path.string(), {"x", "y"}, {{1, 2}, {3}}); },
+                          {path.string(), "1 values", "2 columns"});
+  EXPECT_EQ(read_lines(path), lines);
+  EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
+}
+
+// ---- derived piezoelectric fields ---------------------------------------------------------------
+
+// Linear fields: u = G x + u0, v = H x, phi = p . x + 1, so that every cell value is known exactly.
+struct LinearFields {
+  Eigen::MatrixXd G, H;
+  Eigen::VectorXd p;
+};
+
+LinearFields fields_2d() {
+  LinearFields f;
+  f.G.resize(2, 2);
+  f.G << 0.3, -0.2, 0.5, 0.1;
+  f.H.resize(2, 2);
+  f.H << -1.0, 0.4, 0.0, 2.0;
+  f.p.resize(2);
+  f.p << 0.7, -1.3;
+  return f;
+}
+
+Eigen::VectorXd interpolate_affine(const FESpace& space, const Eigen::MatrixXd& M, double offset) {
+  const int dim = space.mesh().dim();
+  return space.interpolate([&](const double* x, double* out) {
+    for (int i = 0; i < M.rows(); ++i) {
+      out[i] = offset;
+      for (int j = 0; j < dim; ++j) out[i] += M(i, j) * x[j];
+    }
+  });
+}
+
+// An unfinalized model only holding fields: "v" and (optionally) "phi" unknowns, the history "u_prev"
+// and the affine "u" = 0 * v + 1 * u_prev, as a time scheme sets it.
+std::unique_ptr<Model> linear_model(std::shared_ptr<const Mesh> mesh, int order, const LinearFields& f,
+                                    bool with_potential) {
+  auto model = std::make_unique<Model>(mesh);
+  const int dim = mesh->dim();
+  auto vectors = std::make_shared<FESpace>(mesh, order, dim);
+  model->add_unknown("v", vectors);
+  model->set_values("v", interpolate_affine(*vectors, f.H, 0.0));
+  model->add_data_field("u_prev", vectors, interpolate_affine(*vectors, f.G, 0.25));
+  model->add_affine_field("u", "v", {"u_prev"});
+  model->set_affine("u", 0.0, {1.0});
+  if (with_potential) {
+    auto scalars = std::make_shared<FESpace>(mesh, order, 1);
+    model->add_unknown("phi", scalars);
+    model->set_values("phi", interpolate_affine(*scalars, f.p.transpose(), 1.0));
+  }
+  return model;
+}
+
+Eigen::VectorXd voigt_strain(const Eigen::MatrixXd& gradient) {
+  const int dim = int(gradient.rows());
+  Eigen::VectorXd eps(voigt_size(dim));
+  strain_from_gradient(dim, Eigen::MatrixXd(gradient.transpose()).data(), eps.data());  // row-major gradient
+  return eps;
+}
+
+void expect_cells_equal(const std::vector<double>& values, const Eigen::VectorXd& expected, int num_cells,
+                        const char* what) {
+  ASSERT_EQ(values.size(), size_t(num_cells) * expected.size()) << what;
+  for (int c = 0; c < num_cells; ++c)
+    for (int k = 0; k < expected.size(); ++k)
+      EXPECT_NEAR(values[size_t(c) * expected.size() + k], expected[k], 1e-12)
+          << what << " cell " << c << " entry " << k;
+}
+
+PiezoMaterial material_2d() {
+  PiezoMaterial m;
+  m.A = 0.1 * isotropic_stiffness(2, 2.0, 1.0);
+  m.B = isotropic_stiffness(2, 3.0, 2.0);
+  m.E.resize(2, 3);
+  m.E << 0.0, 0.0, 0.7, -0.3, 1.1, 0.0;
+  m.beta.resize(2, 2);
+  m.beta << 2.0, 0.1, 0.1, 3.0;
+  return m;
+}
+
+TEST(PiezoFields, LinearFieldsGiveExactCellValuesOnEveryShapeAndOrder) {
+  const LinearFields f = fields_2d();
+  const PiezoMaterial m = material_2d();
+  const Eigen::VectorXd eps_u = voigt_strain(f.G);
+  const Eigen::VectorXd eps_v = voigt_strain(f.H);
+  for (Shape shape : {Shape::Triangle, Shape::Quadrilateral})
+    for (int order : {1, 2}) {
+      SCOPED_TRACE(message(to_string(shape), " order ", order));
+      auto mesh = std::make_shared<const Mesh>(rectangle_mesh({-1, 0}, {2, 1.5}, 4, 3, shape));
+      const auto model = linear_model(mesh, order, f, true);
+      const int cells = mesh->num_cells();
+      expect_cells_equal(cell_strain(*model, "u"), eps_u, cells, "strain");
+      expect_cells_equal(cell_stress(*model, m), m.A * eps_v + m.B * eps_u + m.E.transpose() * f.p, cells, "stress");
+      expect_cells_equal(cell_electric_field(*model, "phi"), -f.p, cells, "electric field");
+      expect_cells_equal(cell_electric_displacement(*model, m), m.E * eps_u - m.beta * f.p, cells,
+                         "electric displacement");
+    }
+}
+
+TEST(PiezoFields, MechanicalModelStressIsElasticStress) {
+  const LinearFields f = fields_2d();
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 3, 2));
+  const auto model = linear_model(mesh, 1, f, false);
+  PiezoMaterial m = material_2d();
+  m.A.resize(0, 0);  // no viscosity; E and beta are dropped since the model has no potential
+  expect_cells_equal(cell_stress(*model, m), m.B * voigt_strain(f.G), mesh->num_cells(), "stress");
+  expect_cells_equal(cell_electric_displacement(*model, m), m.E * voigt_strain(f.G), mesh->num_cells(), "D");
+}
+
+TEST(PiezoFields, StrainIn3DFollowsTheVoigtOrder) {
+  auto mesh = std::make_shared<const Mesh>(box_mesh({0, 0, 0}, {1, 2, 1}, 2, 2, 2));
+  LinearFields f;
+  f.G.resize(3, 3);
+  f.G << 0.1, 0.2, 0.3, -0.4, 0.5, 0.6, 0.7, -0.8, 0.9;
+  f.H = Eigen::MatrixXd::Zero(3, 3);
+  const auto model = linear_model(mesh, 1, f, false);
+  Eigen::VectorXd expected(6);  // xx, yy, zz, yz, xz, xy with engineering shear
+  expected << 0.1, 0.5, 0.9, 0.6 - 0.8, 0.3 + 0.7, 0.2 - 0.4;
+  expect_cells_equal(cell_strain(*model, "u"), expected, mesh->num_cells(), "strain");
+}
+
+TEST(PiezoFields, WrongFieldsAndTensorsAreNamed) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2));
+  const auto model = linear_model(mesh, 1, fields_2d(), true);
+  expect_error_mentioning([&] { cell_strain(*model, "phi"); }, {"'phi'", "1 components", "expected 2"});
+  expect_error_mentioning([&] { cell_electric_field(*model, "u"); }, {"'u'", "2 components"});
+  PiezoMaterial m;
+  m.B = isotropic_stiffness(3, 1.0, 1.0);
+  expect_error_mentioning([&] { cell_stress(*model, m); }, {"B (elasticity)", "6 x 6", "3 x 3"});
+}
+
+TEST(VonMises, UniaxialStressIsItsMagnitudeAndShearScalesBySqrt3) {
+  for (double s : {2.5, -4.0}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<double> stress(6, 0.0);
+      stress[axis] = s;
+      EXPECT_DOUBLE_EQ(von_mises(stress, 3), std::abs(s));
+    }
+    EXPECT_DOUBLE_EQ(von_mises(std::vector<double>{s, 0, 0}, 2), std::abs(s));
+    EXPECT_DOUBLE_EQ(von_mises(std::vector<double>{0, s, 0}, 2), std::abs(s));
+    for (int shear = 3; shear < 6; ++shear) {
+      std::vector<double> stress(6, 0.0);
+      stress[shear] = s;
+      EXPECT_DOUBLE_EQ(von_mises(stress, 3), std::sqrt(3.0) * std::abs(s));
+    }
+  }
+  EXPECT_DOUBLE_EQ(von_mises(std::vector<double>{7, 7, 7, 0, 0, 0}, 3), 0.0);  // hydrostatic
+}
+
+TEST(VonMises, PlaneFormulaIsTheDocumentedInPlaneOne) {
+  const std::vector<double> s = {1.5, -0.5, 0.25};
+  EXPECT_DOUBLE_EQ(von_mises(s, 2), std::sqrt(1.5 * 1.5 + 1.5 * 0.5 + 0.25 + 3 * 0.0625));
+  // Equal to the 3D formula with szz = 0.
+  EXPECT_DOUBLE_EQ(von_mises(s, 2), von_mises(std::vector<double>{1.5, -0.5, 0, 0, 0, 0.25}, 3));
+  expect_error_mentioning([&] { von_mises(s, 3); }, {"6 values", "got 3"});
+}
+
+TEST_F(OutputTest, AddPiezoOutputWritesThePresentFields) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2));
+  const auto has_array = [](const std::string& text, const std::string& name) {
+    return text.find("Name=\"" + name + "\"") != std::string::npos;
+  };
+  {
+    const auto model = linear_model(mesh, 2, fields_2d(), true);
+    VtuWriter writer(*mesh);
+    add_piezo_output(writer, *model, material_2d());
+    writer.write((directory_ / "piezo.vtu").string());
+    const std::string text = read_text(directory_ / "piezo.vtu");
+    for (const char* name : {"v", "u", "phi", "strain", "stress", "von_mises", "electric_field",
+                             "electric_displacement"})
+      EXPECT_TRUE(has_array(text, name)) << name;
+  }
+  {
+    const auto model = linear_model(mesh, 1, fields_2d(), false);
+    VtuWriter writer(*mesh);
+    add_piezo_output(writer, *model, material_2d());
+    writer.write((directory_ / "mechanical.vtu").string());
+    const std::string text = read_text(directory_ / "mechanical.vtu");
+    for (const char* name : {"v", "u", "strain", "stress", "von_mises"}) EXPECT_TRUE(has_array(text, name)) << name;
+    for (const char* name : {"phi", "electric_field", "electric_displacement"})
+      EXPECT_FALSE(has_array(text, name)) << name;
+  }
+}
+
+// ---- boundary tables ----------------------------------------------------------------------------
+
+TEST(BoundaryNodes, BottomNodesAreSortedByXAndCarryTheFieldValues) {
+  const LinearFields f = fields_2d();
+  const int nx = 4;
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({-1, 0}, {2, 1.5}, nx, 3));
+  for (int order : {1, 2}) {
+    SCOPED_TRACE(message("order ", order));
+    const auto model = linear_model(mesh, order, f, true);
+    const BoundaryNodes nodes = boundary_nodes(model->space("u"), "bottom", 0);
+    ASSERT_EQ(nodes.points.size(), size_t(order * nx + 1));
+    ASSERT_EQ(nodes.scalar_dofs.size(), nodes.points.size());
+    for (size_t k = 0; k < nodes.points.size(); ++k) {
+      EXPECT_DOUBLE_EQ(nodes.points[k][0], -1 + 3.0 * k / (order * nx));
+      EXPECT_EQ(nodes.points[k][1], 0.0);
+      EXPECT_EQ(nodes.points[k], model->space("u").scalar_dof_point(nodes.scalar_dofs[k]));
+    }
+    const auto ux = values_at_nodes(nodes, model->space("u"), model->values("u"), 0);
+    const auto uy = values_at_nodes(nodes, model->space("u"), model->values("u"), 1);
+    const auto phi = values_at_nodes(nodes, model->space("phi"), model->values("phi"), 0);
+    for (size_t k = 0; k < nodes.points.size(); ++k) {
+      const double x = nodes.points[k][0];
+      EXPECT_NEAR(ux[k], f.G(0, 0) * x + 0.25, 1e-12);
+      EXPECT_NEAR(uy[k], f.G(1, 0) * x + 0.25, 1e-12);
+      EXPECT_NEAR(phi[k], f.p[0] * x + 1, 1e-12);
+    }
+  }
+}
+
+TEST(BoundaryNodes, TiesAreOrderedByTheOtherCoordinates) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2));
+  const FESpace space(mesh, 1, 1);
+  const BoundaryNodes nodes = boundary_nodes(space, "boundary", 0);
+  ASSERT_EQ(nodes.points.size(), 8u);
+  const std::vector<std::array<double, 2>> expected = {{0, 0},   {0, 0.5}, {0, 1},   {0.5, 0},
+                                                       {0.5, 1}, {1, 0},   {1, 0.5}, {1, 1}};
+  for (size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(nodes.points[k][0], expected[k][0]) << k;
+    EXPECT_EQ(nodes.points[k][1], expected[k][1]) << k;
+  }
+  expect_error_mentioning([&] { boundary_nodes(space, "all", 0); }, {"'all'", "face region"});
+  expect_error_mentioning([&] { boundary_nodes(space, "bottom", 2); }, {"axis 2", "2D"});
+}
+
+}  // namespace
+}  // namespace pc
