@@ -172,11 +172,21 @@ void check_symmetric(BrickAssembly& assembly, const BrickCheckSetup& setup, cons
                      BrickCheckReport& report) {
   Tangents tangents;
   assembly.evaluate(state, nullptr, &tangents);
-  const double scale = std::max(max_abs(tangents), 1e-300);
+  // In a model, a block with respect to an affine field lands in its base unknown's columns.
+  auto base = [&](const std::string& name) {
+    const auto it = setup.affine_base.find(name);
+    return it == setup.affine_base.end() ? name : it->second;
+  };
+  Tangents folded;
   for (const auto& [key, K] : tangents) {
-    const auto transposed = tangents.find({key.second, key.first});
+    auto [it, inserted] = folded.try_emplace({key.first, base(key.second)}, Eigen::MatrixXd::Zero(K.rows(), K.cols()));
+    it->second += K;
+  }
+  const double scale = std::max(max_abs(folded), 1e-300);
+  for (const auto& [key, K] : folded) {
+    const auto transposed = folded.find({key.second, key.first});
     const Eigen::MatrixXd other =
-        transposed == tangents.end() ? Eigen::MatrixXd::Zero(K.cols(), K.rows()) : Eigen::MatrixXd(transposed->second);
+        transposed == folded.end() ? Eigen::MatrixXd::Zero(K.cols(), K.rows()) : Eigen::MatrixXd(transposed->second);
     const double error = (K - other.transpose()).cwiseAbs().maxCoeff() / scale;
     report.max_symmetry_error = std::max(report.max_symmetry_error, error);
     if (error > setup.symmetry_tolerance)

@@ -33,6 +33,9 @@ struct BrickCheckSetup {
   std::shared_ptr<const Mesh> mesh;
   // The space of every field a brick may name (unknowns, affine and data fields alike).
   std::map<std::string, std::shared_ptr<const FESpace>> spaces;
+  // Affine fields and the unknown whose columns their tangents fill in a Model (u = k v + u_prev fills
+  // v's columns): the symmetry check compares blocks after this mapping.
+  std::map<std::string, std::string> affine_base = {{"u", "v"}, {"a", "v"}};
   // Random states draw each field's coefficients uniformly from [low, high] (default [-1, 1]).
   std::map<std::string, std::pair<double, double>> ranges;
   int samples = 3;
