@@ -1,0 +1,93 @@
+#pragma once
+// Friction laws p_tau(r): the tangential contact stress -sigma_tau as a function of the tangential
+// velocity r = v_tau (dim components, tangent to the contact surface) and, for laws of Coulomb type, of
+// the normal pressure p_nu = -sigma_nu >= 0 (paper (9), (13)). Every law has the signature
+//   template <class S> void operator()(const S* r, int dim, const S& normal_pressure, S* out) const;
+// templated on the scalar so that Dual gives the derivatives in r and in the pressure.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "assembly/dual.hpp"
+#include "bricks/laws/law_parameters.hpp"
+
+namespace pc {
+
+// out = r / sqrt(|r|^2 + eps^2), the slip direction smoothed over a velocity eps. The components are
+// scaled by s = max(|r_i|, eps) before squaring so that nothing overflows or underflows for |r| up to
+// 1e300 or eps down to 1e-300; s is a constant factor of an exact identity, so derivatives stay exact.
+template <class S>
+void regularized_direction(const S* r, int dim, double eps, S* out) {
+  using std::sqrt;
+  double s = eps;
+  for (int i = 0; i < dim; ++i) s = std::max(s, std::abs(value_of(r[i])));
+  S sum = (eps / s) * (eps / s);
+  for (int i = 0; i < dim; ++i) sum += (r[i] / s) * (r[i] / s);
+  const S inverse_norm = 1.0 / sqrt(sum);
+  for (int i = 0; i < dim; ++i) out[i] = (r[i] / s) * inverse_norm;
+}
+
+// p_tau(r) = c_tau r, paper (13).
+struct ViscousFriction {
+  double c_tau = 0;
+
+  static constexpr bool affine = true;
+  static constexpr bool dissipative = true;
+  static constexpr bool symmetric = true;
+  static constexpr bool uses_normal_pressure = false;
+
+  template <class S>
+  void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
+    for (int i = 0; i < dim; ++i) out[i] = c_tau * r[i];
+  }
+  void validate(const std::string& brick) const {
+    require_parameter_at_least(brick, "ViscousFriction", "c_tau", c_tau, 0);
+  }
+};
+
+// p_tau(r) = mu |p_nu| r / sqrt(|r|^2 + eps^2): Coulomb's law with the slip threshold mu |p_nu|, smoothed
+// over slip velocities of order eps.
+struct RegularizedCoulomb {
+  double mu = 0;
+  double eps = 1e-6;
+
+  static constexpr bool affine = false;
+  static constexpr bool dissipative = true;
+  static constexpr bool symmetric = true;  // in r; the pressure coupling is not, and the brick knows it
+  static constexpr bool uses_normal_pressure = true;
+
+  template <class S>
+  void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
+    // |p_nu| with the right-sided derivative at 0, like the normal laws that produce it.
+    const S threshold = mu * (normal_pressure < 0.0 ? -normal_pressure : normal_pressure);
+    regularized_direction(r, dim, eps, out);
+    for (int i = 0; i < dim; ++i) out[i] *= threshold;
+  }
+  void validate(const std::string& brick) const {
+    require_parameter_at_least(brick, "RegularizedCoulomb", "mu", mu, 0);
+    require_positive_parameter(brick, "RegularizedCoulomb", "eps", eps);
+  }
+};
+
+// p_tau(r) = g r / sqrt(|r|^2 + eps^2): Tresca's law with a given slip bound g, smoothed like Coulomb's.
+struct RegularizedTresca {
+  double g = 0;
+  double eps = 1e-6;
+
+  static constexpr bool affine = false;
+  static constexpr bool dissipative = true;
+  static constexpr bool symmetric = true;
+  static constexpr bool uses_normal_pressure = false;
+
+  template <class S>
+  void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
+    regularized_direction(r, dim, eps, out);
+    for (int i = 0; i < dim; ++i) out[i] *= g;
+  }
+  void validate(const std::string& brick) const {
+    require_parameter_at_least(brick, "RegularizedTresca", "g", g, 0);
+    require_positive_parameter(brick, "RegularizedTresca", "eps", eps);
+  }
+};
+
+}  // namespace pc

@@ -1,0 +1,272 @@
+// The contact and foundation laws, each through the law checker (Dual derivatives against finite
+// differences away from and at kinks, the affine and dissipative claims, finite values at extreme
+// arguments), their closed forms, their parameter checks; and the checker itself against laws that break
+// each of its rules.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "assembly/dual.hpp"
+#include "assembly/error.hpp"
+#include "bricks/laws/foundation_laws.hpp"
+#include "bricks/laws/friction_laws.hpp"
+#include "bricks/laws/normal_laws.hpp"
+#include "bricks/testing/law_checker.hpp"
+
+namespace pc {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// ---- the paper's laws (12), (13), (10) with its data ------------------------------------------------
+
+TEST(Laws, PaperLawsHaveTheirClosedForms) {
+  using D = Dual<2>;
+  const LinearDampedResponse p_nu{1e12};
+  EXPECT_DOUBLE_EQ(p_nu(2e-3), 2e9);
+  EXPECT_EQ(p_nu(-1.0), 0.0);
+  EXPECT_EQ(p_nu(D::variable(0.0, 0)).d[0], 1e12);  // right-sided at the kink
+  EXPECT_EQ(p_nu(D::variable(-1e-9, 0)).d[0], 0.0);
+
+  const ViscousFriction p_tau{0.3};
+  const double r[2] = {2.0, -1.0};
+  double out[2];
+  p_tau(r, 2, 0.0, out);
+  EXPECT_DOUBLE_EQ(out[0], 0.6);
+  EXPECT_DOUBLE_EQ(out[1], -0.3);
+
+  const LinearConductance conductance{1.0, -48.0};
+  EXPECT_EQ(conductance(2.0, 0.0), 50.0);
+}
+
+TEST(Laws, PaperLawsPassTheChecker) {
+  const auto normal = check_scalar_law(LinearDampedResponse{1e12}, {.name = "LinearDampedResponse"});
+  EXPECT_TRUE(normal.ok()) << normal;
+  const auto friction = check_friction_law(ViscousFriction{0.3}, {.name = "ViscousFriction"});
+  EXPECT_TRUE(friction.ok()) << friction;
+  const auto foundation = check_foundation_law(LinearConductance{1.0, -48.0}, {.name = "LinearConductance"});
+  EXPECT_TRUE(foundation.ok()) << foundation;
+}
+
+// ---- normal laws --------------------------------------------------------------------------------------
+
+TEST(NormalLaws, PassTheChecker) {
+  const auto stiff = check_scalar_law(LinearDampedResponse{1e16}, {.name = "stiff damped response"});
+  EXPECT_TRUE(stiff.ok()) << stiff;
+  // r_+^m with 1 < m < 2 has an unbounded second derivative at 0, which no finite difference resolves:
+  // checked away from the kink only.
+  for (double m : {1.0, 2.0, 2.5, 3.0}) {
+    const auto report = check_scalar_law(
+        PowerDampedResponse{1e12, m},
+        {.name = message("PowerDampedResponse m = ", m), .extremes = {1e-300, 1e-12, 1e12, 1e90}});
+    EXPECT_TRUE(report.ok()) << report;
+  }
+  const auto fractional = check_scalar_law(PowerDampedResponse{1e12, 1.5}, {.name = "m = 1.5", .kinks = {}});
+  EXPECT_TRUE(fractional.ok()) << fractional;
+  const auto compliance = check_scalar_law(NormalCompliance{1e9, 2.0, 0.1},
+                                           {.name = "NormalCompliance", .kinks = {0.1}, .extremes = {1e-300, 1e140}});
+  EXPECT_TRUE(compliance.ok()) << compliance;
+}
+
+TEST(NormalLaws, ClosedForms) {
+  const PowerDampedResponse power{3.0, 2.0};
+  EXPECT_DOUBLE_EQ(power(0.5), 0.75);
+  EXPECT_EQ(power(-0.5), 0.0);
+  const NormalCompliance compliance{2.0, 1.0, 0.1};
+  EXPECT_DOUBLE_EQ(compliance(0.4), 0.6);
+  EXPECT_EQ(compliance(0.05), 0.0);  // within the gap: no contact
+  EXPECT_TRUE(NormalCompliance::uses_displacement);
+  EXPECT_FALSE(LinearDampedResponse::uses_displacement);
+}
+
+// ---- friction laws ------------------------------------------------------------------------------------
+
+TEST(FrictionLaws, PassTheChecker) {
+  for (double eps : {1e-2, 0.5}) {
+    const auto coulomb =
+        check_friction_law(RegularizedCoulomb{0.3, eps}, {.name = message("RegularizedCoulomb eps = ", eps)});
+    EXPECT_TRUE(coulomb.ok()) << coulomb;
+    const auto tresca =
+        check_friction_law(RegularizedTresca{5.0, eps}, {.name = message("RegularizedTresca eps = ", eps)});
+    EXPECT_TRUE(tresca.ok()) << tresca;
+  }
+  // Large pressures, as c_nu = 1e12 produces.
+  const auto pressed =
+      check_friction_law(RegularizedCoulomb{0.3, 1e-3}, {.name = "pressed Coulomb", .pressure_high = 1e12});
+  EXPECT_TRUE(pressed.ok()) << pressed;
+}
+
+TEST(FrictionLaws, TinyRegularizationStaysFiniteAndDissipative) {
+  // eps = 1e-12 is below any finite-difference step: only the claims and the extremes are checked.
+  const LawCheckOptions options{.name = "eps = 1e-12", .derivatives = false};
+  const auto coulomb = check_friction_law(RegularizedCoulomb{0.3, 1e-12}, options);
+  EXPECT_TRUE(coulomb.ok()) << coulomb;
+  const auto tresca = check_friction_law(RegularizedTresca{5.0, 1e-12}, options);
+  EXPECT_TRUE(tresca.ok()) << tresca;
+}
+
+TEST(FrictionLaws, ClosedForms) {
+  // Sliding fast (|r| >> eps) Coulomb gives mu p along r; Tresca g along r.
+  const double r[3] = {3.0, 0.0, -4.0};
+  double out[3];
+  RegularizedCoulomb{0.5, 1e-9}(r, 3, 2.0, out);
+  EXPECT_NEAR(out[0], 0.5 * 2.0 * 0.6, 1e-12);
+  EXPECT_NEAR(out[2], -0.5 * 2.0 * 0.8, 1e-12);
+  RegularizedTresca{7.0, 1e-9}(r, 3, 0.0, out);
+  EXPECT_NEAR(out[0], 7.0 * 0.6, 1e-12);
+  // |r|^2 would overflow here, and eps^2 underflow: the scaled norm needs neither.
+  const double huge[2] = {1e300, -1e300};
+  RegularizedTresca{7.0, 1e-200}(huge, 2, 0.0, out);
+  EXPECT_NEAR(out[0], 7.0 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(out[1], -7.0 / std::sqrt(2.0), 1e-12);
+  // At the stick state the regularized slope is threshold / eps.
+  using D = Dual<2>;
+  const D rd[2] = {D::variable(0.0, 0), D::variable(0.0, 1)};
+  D td[2];
+  RegularizedCoulomb{0.5, 1e-3}(rd, 2, D(4.0), td);
+  EXPECT_DOUBLE_EQ(td[0].d[0], 0.5 * 4.0 / 1e-3);
+  EXPECT_DOUBLE_EQ(td[0].d[1], 0.0);
+  // Pressure 0 (no contact): no friction, but the right-sided slope in the pressure.
+  const D v[2] = {D(1.0), D(0.0)};
+  RegularizedCoulomb{0.5, 1e-9}(v, 2, D::variable(0.0, 0), td);
+  EXPECT_EQ(td[0].v, 0.0);
+  EXPECT_NEAR(td[0].d[0], 0.5, 1e-12);
+}
+
+// ---- foundation laws ----------------------------------------------------------------------------------
+
+TEST(FoundationLaws, PassTheChecker) {
+  const PressureActivatedConductance<LinearDampedResponse> unit{1.0, -48.0, 1.0, {1e12}};
+  const auto report = check_foundation_law(unit, {.name = "PressureActivatedConductance", .pressure_high = 4});
+  EXPECT_TRUE(report.ok()) << report;
+  const PressureActivatedConductance<LinearDampedResponse> paper_scale{1.0, -48.0, 1e6, {1e12}};
+  const auto scaled = check_foundation_law(paper_scale, {.name = "p_ref = 1e6", .pressure_high = 4e6});
+  EXPECT_TRUE(scaled.ok()) << scaled;
+}
+
+TEST(FoundationLaws, ClosedForms) {
+  // Aggregate deduction picks the normal law's type.
+  const PressureActivatedConductance law{2.0, -48.0, 3.0, LinearDampedResponse{1e12}};
+  EXPECT_EQ(law(2.0, 0.0), 0.0);   // no pressure, no current
+  EXPECT_EQ(law(2.0, -5.0), 0.0);  // a negative pressure is no pressure
+  EXPECT_DOUBLE_EQ(law(2.0, 3.0), 2.0 * 0.5 * 50.0);
+  EXPECT_NEAR(law(2.0, 1e200), 2.0 * 50.0, 1e-12);
+  EXPECT_TRUE(std::isfinite(law(1e150, 1e300)));
+}
+
+// ---- parameter checks ---------------------------------------------------------------------------------
+
+// validate() throws pc::Error whose message names the brick, the parameter and its value.
+template <class Law>
+void expect_rejected(const Law& law, const std::string& parameter_and_value) {
+  try {
+    law.validate("contact");
+    ADD_FAILURE() << "accepted a law with " << parameter_and_value;
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("brick 'contact'"), std::string::npos) << what;
+    EXPECT_NE(what.find(parameter_and_value), std::string::npos) << what;
+  }
+}
+
+TEST(Laws, BadParametersAreRejectedByName) {
+  expect_rejected(LinearDampedResponse{-1.0}, "c_nu = -1");
+  expect_rejected(LinearDampedResponse{kNaN}, "c_nu = nan");
+  expect_rejected(PowerDampedResponse{1.0, 0.5}, "m = 0.5");
+  expect_rejected(PowerDampedResponse{kInf, 2.0}, "c_nu = inf");
+  expect_rejected(NormalCompliance{1.0, 1.0, kInf}, "gap = inf");
+  expect_rejected(NormalCompliance{-2.0, 1.0, 0.0}, "c = -2");
+  expect_rejected(ViscousFriction{-0.3}, "c_tau = -0.3");
+  expect_rejected(RegularizedCoulomb{-0.1, 1e-3}, "mu = -0.1");
+  expect_rejected(RegularizedCoulomb{0.3, 0.0}, "eps = 0");
+  expect_rejected(RegularizedTresca{-1.0, 1e-3}, "g = -1");
+  expect_rejected(RegularizedTresca{1.0, -1e-3}, "eps = -0.001");
+  expect_rejected(LinearConductance{-1.0, 0.0}, "k_e = -1");
+  expect_rejected(LinearConductance{1.0, kNaN}, "phi_f = nan");
+  expect_rejected(PressureActivatedConductance<>{1.0, -48.0, 0.0, {1e12}}, "p_ref = 0");
+  expect_rejected(PressureActivatedConductance<>{1.0, -48.0, 1.0, {-1e12}}, "c_nu = -1e+12");
+  // Zero coefficients are allowed: they switch a term off.
+  EXPECT_NO_THROW((LinearDampedResponse{0.0}.validate("contact")));
+  EXPECT_NO_THROW((RegularizedCoulomb{0.0, 1e-3}.validate("contact")));
+}
+
+// ---- the checker catches laws that break its rules ------------------------------------------------------
+
+// Loses its derivative: the value goes through a plain double.
+struct DetachedDerivative {
+  template <class S>
+  S operator()(const S& r) const {
+    const double x = value_of(r);
+    return S(x * x);
+  }
+};
+struct FalselyAffine {
+  static constexpr bool affine = true;
+  template <class S>
+  S operator()(const S& r) const { return r * r; }
+};
+struct FalselyDissipative {
+  static constexpr bool dissipative = true;
+  template <class S>
+  S operator()(const S& r) const { return -2.0 * r; }
+};
+struct Overflowing {
+  template <class S>
+  S operator()(const S& r) const {
+    using std::exp;
+    return exp(r);
+  }
+};
+// Right-sided at the kink is the library's rule; this law takes the left-sided derivative there.
+struct LeftSidedKink {
+  template <class S>
+  S operator()(const S& r) const { return r <= 0.0 ? S(0.0) : r; }
+};
+// A Coulomb law that forgets the derivative in the pressure.
+struct PressureBlindCoulomb {
+  template <class S>
+  void operator()(const S* r, int dim, const S& p, S* out) const {
+    for (int d = 0; d < dim; ++d) out[d] = value_of(p) * r[d];
+  }
+};
+struct NonMonotoneFoundation {
+  static constexpr bool dissipative = true;
+  template <class S>
+  S operator()(const S& phi, const S&) const { return -phi; }
+};
+
+TEST(LawChecker, CatchesEachBrokenRule) {
+  EXPECT_FALSE(check_scalar_law(DetachedDerivative{}).ok());
+  EXPECT_FALSE(check_scalar_law(FalselyAffine{}).ok());
+  EXPECT_FALSE(check_scalar_law(FalselyDissipative{}).ok());
+  EXPECT_FALSE(check_scalar_law(Overflowing{}, {.extremes = {1e3}}).ok());
+  EXPECT_FALSE(check_scalar_law(LeftSidedKink{}).ok());
+  EXPECT_FALSE(check_scalar_law(LinearDampedResponse{-1.0}).ok());  // validate() rejects it
+  EXPECT_FALSE(check_friction_law(PressureBlindCoulomb{}).ok());
+  EXPECT_FALSE(check_foundation_law(NonMonotoneFoundation{}).ok());
+  const auto report = check_scalar_law(DetachedDerivative{}, {.name = "detached"});
+  std::ostringstream text;
+  text << report;
+  EXPECT_NE(text.str().find("detached"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("finite differences"), std::string::npos) << text.str();
+}
+
+// What a user writes for a law of their own: the law and a five-line test.
+struct QuadraticResponse {
+  static constexpr bool dissipative = true;
+  template <class S>
+  S operator()(const S& r) const { return r < 0.0 ? S(0.0) : 4.0 * r * r; }
+};
+
+TEST(LawChecker, AUserLawInFiveLines) {
+  const auto report = check_scalar_law(QuadraticResponse{}, {.name = "QuadraticResponse"});
+  EXPECT_TRUE(report.ok()) << report;
+  EXPECT_GT(report.checks, 100);
+}
+
+}  // namespace
+}  // namespace pc
