@@ -1,6 +1,7 @@
 #include "models/model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "assembly/error.hpp"
@@ -421,25 +422,49 @@ void Model::refresh_linear_sum(System& s) {
 
 void Model::assemble(bool tangent) {
   System& s = system();
-  for (const std::string& u : unknown_names_) field_residuals_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
+  std::map<std::string, Eigen::VectorXd> brick_residual;  // one brick's contribution, to measure it
+  for (const std::string& u : unknown_names_) {
+    field_residuals_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
+    brick_residual[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
+    residual_scales_[u] = 0;
+  }
+  // The largest single brick contribution on the free dofs: the residual is a sum of such terms, so
+  // round-off leaves it at about machine epsilon times this scale, whatever the first residual was.
+  auto measure_and_add = [&](const std::string& u) {
+    Eigen::VectorXd& r = brick_residual.at(u);
+    const auto global = s.layout.global_indices(s.layout.field_index(u));
+    double sum = 0;
+    for (int d = 0; d < int(r.size()); ++d)
+      if (global[d] >= 0) sum += r[d] * r[d];
+    residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(sum));
+    field_residuals_.at(u) += r;
+    r.setZero();
+  };
 
   for (int b = 0; b < int(bricks_.size()); ++b) {
     refresh_brick(b);
     BrickState& state = *brick_states_[b];
     const Brick& brick = *bricks_[b];
+    std::set<std::string> touched;
     for (BoundTerm& bt : state.terms) {
       std::vector<const Eigen::VectorXd*> values;
       for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
       std::vector<Eigen::VectorXd*> outputs;
       if (!brick.linear()) {
-        for (const std::string& u : bt.test_unknowns) outputs.push_back(&field_residuals_.at(u));
+        for (const std::string& u : bt.test_unknowns) {
+          outputs.push_back(&brick_residual.at(u));
+          touched.insert(u);
+        }
         bt.assembly->assemble(values, time_, outputs, tangent);
         continue;
       }
       outputs.assign(bt.test_unknowns.size(), nullptr);
       if (!state.tangent_valid) bt.assembly->assemble(values, time_, outputs, true);
     }
-    if (!brick.linear()) continue;
+    if (!brick.linear()) {
+      for (const std::string& u : touched) measure_and_add(u);
+      continue;
+    }
     if (!state.tangent_valid) {
       state.tangent_valid = true;
       ++linear_version_;
@@ -474,12 +499,17 @@ void Model::assemble(bool tangent) {
       state.r0_valid = true;
       state.r0_time = time_;
     }
-    for (const auto& [u, r0] : state.r0) field_residuals_.at(u) += r0;
+    for (const auto& [u, r0] : state.r0) {
+      brick_residual.at(u) += r0;
+      touched.insert(u);
+    }
     for (const BoundTerm& bt : state.terms)
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
-        const Coupling& c = bt.assembly->term().couplings()[k];
-        field_residuals_.at(bt.field_names[c.test]) += bt.assembly->block(int(k)) * this->values(bt.trial_fields[k]);
+        const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
+        brick_residual.at(u) += bt.assembly->block(int(k)) * this->values(bt.trial_fields[k]);
+        touched.insert(u);
       }
+    for (const std::string& u : touched) measure_and_add(u);
   }
 
   if (tangent) {

@@ -94,6 +94,9 @@ class Model : public DataView {
   const CsrMatrix& jacobian() const;
   // Residual of one unknown in its field numbering (all dofs, constrained ones included): reactions.
   const Eigen::VectorXd& field_residual(const std::string& unknown) const;
+  // Per unknown, the norm (on free dofs) of the largest single brick contribution to the last residual:
+  // the scale of the forces that balance, against which round-off is measured.
+  const std::map<std::string, double>& residual_scales() const { return residual_scales_; }
   // Unknowns on free dofs, and their update x <- x + step.
   Eigen::VectorXd free_values() const;
   void add_to_free_values(const Eigen::VectorXd& step);
@@ -135,6 +138,7 @@ class Model : public DataView {
   std::map<std::vector<std::string>, std::unique_ptr<System>> systems_;
   std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
   std::map<std::string, Eigen::VectorXd> field_residuals_;
+  std::map<std::string, double> residual_scales_;
   Eigen::VectorXd residual_;
   std::uint64_t clock_ = 0;           // version source for constants and data fields
   std::uint64_t linear_version_ = 1;  // changes when a linear block or an affine factor changes

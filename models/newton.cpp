@@ -78,16 +78,15 @@ NewtonReport NewtonSolver::solve(Model& model) {
   // Reference of each block: its first residual (or its absolute tolerance, if that is larger), so that
   // the merit function weighs the blocks alike whatever their units.
   std::vector<double> reference(n_blocks);
-  for (int b = 0; b < n_blocks; ++b) reference[b] = std::max({norms[b], absolute[b], 1e-300});
+  for (int b = 0; b < n_blocks; ++b)
+    reference[b] = std::max({norms[b], model.residual_scales().at(report.blocks[b]), absolute[b], 1e-300});
   auto residual_converged = [&](const std::vector<double>& r) {
     for (int b = 0; b < n_blocks; ++b)
       if (r[b] > std::max(absolute[b], options_.relative_tolerance * reference[b])) return false;
     return true;
   };
   if (!model.residual().allFinite()) return finish(NewtonOutcome::Diverged, "the initial residual is not finite");
-  bool converged_at_start = true;
-  for (int b = 0; b < n_blocks; ++b) converged_at_start = converged_at_start && norms[b] <= absolute[b];
-  if (converged_at_start || layout.size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
+  if (residual_converged(norms) || layout.size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
   const double merit0 = merit(norms, reference);
 
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {

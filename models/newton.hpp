@@ -14,8 +14,11 @@ namespace pc {
 
 struct NewtonOptions {
   int max_iterations = 25;
-  // Block b has converged when ||R_b|| <= max(absolute, relative * ||R_b|| at the first iteration).
-  double relative_tolerance = 1e-9;
+  // Block b has converged when ||R_b|| <= max(absolute, relative * reference_b), where reference_b is the
+  // larger of the block's first residual and the scale of the forces that balance in it (the largest
+  // single brick contribution, Model::residual_scales): a residual cannot drop below round-off of the
+  // terms it sums, however small the first residual of a step was.
+  double relative_tolerance = 1e-10;
   double absolute_tolerance = 1e-14;
   std::map<std::string, double> absolute_tolerances;  // per unknown, overriding absolute_tolerance
   // ... or when a full step changed every block by at most this much relative to the block's size.
