@@ -1,0 +1,325 @@
+#include "models/scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <optional>
+
+#include "assembly/error.hpp"
+#include "assembly/gmsh_import.hpp"
+#include "assembly/mesh_generators.hpp"
+#include "bricks/voigt.hpp"
+
+namespace pc {
+namespace {
+
+// Collects every problem instead of stopping at the first, so that one run of `check` lists them all.
+class Problems {
+ public:
+  // Runs the check; a pc::Error it throws becomes one problem and the result is empty.
+  template <class F>
+  auto check(F&& f) -> std::optional<decltype(f())> {
+    try {
+      return f();
+    } catch (const Error& e) {
+      add(e.what());
+      return std::nullopt;
+    }
+  }
+  void check_void(const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const Error& e) {
+      add(e.what());
+    }
+  }
+  void add(std::string problem) {
+    if (problem.rfind("scene: ", 0) == 0) problem = problem.substr(7);
+    list_.push_back(std::move(problem));
+  }
+  void throw_if_any(const std::string& scene) const {
+    if (list_.empty()) return;
+    std::string text = message("scene '", scene, "' has ", list_.size(), " problem", list_.size() > 1 ? "s" : "", ":");
+    for (const std::string& p : list_) text += "\n  - " + p;
+    throw Error(text);
+  }
+
+ private:
+  std::vector<std::string> list_;
+};
+
+std::vector<std::string> names_of(const Json& j) {
+  if (j.is_string()) return {j.as_string()};
+  std::vector<std::string> names;
+  for (const Json& item : j.as_array()) names.push_back(item.as_string());
+  return names;
+}
+
+std::shared_ptr<const Mesh> build_mesh(const Json& m, const std::string& directory, Scene& scene) {
+  require_known_keys(m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor"});
+  if (const Json* file = m.find("gmsh")) {
+    std::filesystem::path path = file->as_string();
+    if (path.is_relative()) path = std::filesystem::path(directory) / path;
+    GmshOptions options;
+    if (const Json* f = m.find("size_factor")) options.mesh_size_factor = f->as_positive();
+    auto mesh = std::make_shared<const Mesh>(import_gmsh(path.string(), options));
+    scene.mesh_description = message("gmsh '", file->as_string(), "': ", mesh->num_cells(), " ",
+                                     to_string(mesh->cell_shape()), "s");
+    return mesh;
+  }
+  const std::string generator = m.at("generator").as_string();
+  const std::string cell = m.contains("cell") ? m.at("cell").as_string() : "triangle";
+  const auto x = m.at("x").as_vector(2), y = m.at("y").as_vector(2);
+  scene.nx = m.at("nx").as_int_at_least(1);
+  scene.ny = m.at("ny").as_int_at_least(1);
+  if (generator == "rectangle") {
+    require(cell == "triangle" || cell == "quadrilateral", "scene: 'mesh.cell' must be triangle or quadrilateral for "
+            "a rectangle, got '", cell, "'");
+    scene.mesh_description = message(scene.nx, " x ", scene.ny, " ", cell, "s");
+    return std::make_shared<const Mesh>(rectangle_mesh({x[0], y[0]}, {x[1], y[1]}, scene.nx, scene.ny,
+                                                       cell == "triangle" ? Shape::Triangle : Shape::Quadrilateral));
+  }
+  if (generator == "box") {
+    const auto z = m.at("z").as_vector(2);
+    const int nz = m.at("nz").as_int_at_least(1);
+    require(cell == "tetrahedron" || cell == "hexahedron", "scene: 'mesh.cell' must be tetrahedron or hexahedron "
+            "for a box, got '", cell, "'");
+    scene.mesh_description = message(scene.nx, " x ", scene.ny, " x ", nz, " ", cell, "s");
+    return std::make_shared<const Mesh>(box_mesh({x[0], y[0], z[0]}, {x[1], y[1], z[1]}, scene.nx, scene.ny, nz,
+                                                 cell == "tetrahedron" ? Shape::Tetrahedron : Shape::Hexahedron));
+  }
+  fail("scene: 'mesh.generator' must be rectangle or box (or give mesh.gmsh), got '", generator, "'");
+}
+
+// A constant or linearly growing load: value, or value * t.
+Load make_load(std::vector<double> value, const std::string& time) {
+  if (time == "constant") return [value](const double*, double, double* out) {
+    for (size_t i = 0; i < value.size(); ++i) out[i] = value[i];
+  };
+  return [value](const double*, double t, double* out) {
+    for (size_t i = 0; i < value.size(); ++i) out[i] = value[i] * t;
+  };
+}
+
+bool all_zero(const std::vector<double>& v) {
+  for (double x : v)
+    if (x != 0) return false;
+  return true;
+}
+
+void require_region(const Mesh& mesh, const Json& at, const std::string& name, RegionKind kind) {
+  std::string known;
+  for (const std::string& n : mesh.region_names()) known += (known.empty() ? "" : ", ") + n;
+  require(mesh.has_region(name), "scene: '", at.path(), "' names region '", name, "', which the mesh lacks (it has: ",
+          known, ")");
+  require(mesh.region_kind(name) == kind, "scene: '", at.path(), "': region '", name, "' must be a ",
+          kind == RegionKind::Faces ? "face (boundary)" : "cell", " region");
+}
+
+FoundationSpec read_foundation(const Json& f) {
+  require_known_keys(f, {"type", "k_e", "phi_f", "p_ref"});
+  FoundationSpec spec;
+  spec.type = f.at("type").as_string();
+  require(spec.type == "insulated" || spec.type == "conductive" || spec.type == "pressure_activated", "scene: '",
+          f.at("type").path(), "' must be insulated, conductive or pressure_activated, got '", spec.type, "'");
+  if (spec.type == "insulated") return spec;
+  spec.k_e = f.at("k_e").as_number_at_least(0);
+  spec.phi_f = f.at("phi_f").as_number();
+  if (spec.type == "pressure_activated") spec.p_ref = f.at("p_ref").as_positive();
+  return spec;
+}
+
+}  // namespace
+
+Scene load_scene(const Json& json, const std::string& directory) {
+  Scene scene;
+  scene.json = json;
+  Problems problems;
+  scene.name = problems.check([&] { return json.at("name").as_string(); }).value_or("unnamed");
+  problems.check_void([&] {
+    require_known_keys(json, {"name", "about", "mesh", "regions", "material", "contact", "foundation", "loads", "time",
+                              "solver", "output"});
+  });
+  PiezoContactSpec& spec = scene.spec;
+
+  problems.check_void([&] { spec.mesh = build_mesh(json.at("mesh"), directory, scene); });
+  problems.check_void([&] {
+    spec.order = json.at("mesh").at("order").as_int();
+    require(spec.order == 1 || spec.order == 2, "scene: 'mesh.order' must be 1 or 2, got ", spec.order);
+  });
+  const int dim = spec.mesh ? spec.mesh->dim() : 2;
+
+  // Material: validated here so that messages carry the scene paths.
+  problems.check_void([&] {
+    const Json& m = json.at("material");
+    require_known_keys(m, {"name", "rho", "voigt_order", "elasticity_B", "viscosity_tau_v", "viscosity_A", "piezo_E",
+                           "permittivity_beta"});
+    spec.rho = m.at("rho").as_number_at_least(0);
+  });
+  const Json* material = json.find("material");
+  if (material && material->is_object()) {
+    problems.check_void([&] {
+      spec.B = material->at("elasticity_B").as_matrix();
+      check_stiffness("material.elasticity_B", spec.B, dim);
+    });
+    problems.check_void([&] {
+      if (const Json* a = material->find("viscosity_A")) {
+        spec.A = a->as_matrix();
+        check_stiffness("material.viscosity_A", spec.A, dim, /*allow_zero=*/true);
+      }
+    });
+    problems.check_void([&] {
+      const Json* e = material->find("piezo_E");
+      const Json* beta = material->find("permittivity_beta");
+      require((e == nullptr) == (beta == nullptr), "scene: material.piezo_E and material.permittivity_beta go "
+              "together (both for a piezoelectric body, neither for a purely mechanical one)");
+      if (!e) return;
+      spec.E = e->as_matrix();
+      spec.beta = beta->as_matrix();
+      check_piezoelectric("material.piezo_E", spec.E, dim);
+      check_permittivity("material.permittivity_beta", spec.beta, dim);
+    });
+  }
+  const bool electric = spec.E.size() > 0;
+
+  // Regions and what acts on them.
+  problems.check_void([&] {
+    const Json& r = json.at("regions");
+    require_known_keys(r, {"clamped", "traction", "contact", "grounded", "charge"});
+    if (const Json* c = r.find("clamped")) spec.clamped = names_of(*c);
+    if (const Json* g = r.find("grounded")) spec.grounded = names_of(*g);
+    if (const Json* c = r.find("contact")) spec.contact = c->as_string();
+    if (!spec.mesh) return;
+    for (const std::string& n : spec.clamped) require_region(*spec.mesh, r.at("clamped"), n, RegionKind::Faces);
+    for (const std::string& n : spec.grounded) require_region(*spec.mesh, r.at("grounded"), n, RegionKind::Faces);
+    if (!spec.contact.empty()) require_region(*spec.mesh, r.at("contact"), spec.contact, RegionKind::Faces);
+    if (const Json* c = r.find("charge"))
+      for (const std::string& n : names_of(*c)) require_region(*spec.mesh, *c, n, RegionKind::Faces);
+    require(!spec.clamped.empty(), "scene: 'regions.clamped' is empty: the body needs a clamped side (meas Gamma_D > 0)");
+    require(!electric || !spec.grounded.empty(), "scene: 'regions.grounded' is empty: the potential needs a grounded "
+            "side (meas Gamma_a > 0)");
+  });
+
+  problems.check_void([&] {
+    const Json& loads = json.at("loads");
+    require_known_keys(loads, {"f0", "traction", "q0", "q_b"});
+    if (const Json* f0 = loads.find("f0")) {
+      const auto value = f0->as_vector(size_t(dim));
+      if (!all_zero(value)) spec.body_force = make_load(value, "constant");
+    }
+    if (const Json* t = loads.find("traction")) {
+      for (const Json& item : t->as_array()) {
+        require_known_keys(item, {"region", "value", "time"});
+        const std::string region = item.at("region").as_string();
+        if (spec.mesh) require_region(*spec.mesh, item.at("region"), region, RegionKind::Faces);
+        const std::string time = item.contains("time") ? item.at("time").as_string() : "constant";
+        require(time == "constant" || time == "linear", "scene: '", item.path(), ".time' must be constant or linear "
+                "(value * t), got '", time, "'");
+        spec.tractions.push_back({region, make_load(item.at("value").as_vector(size_t(dim)), time),
+                                  time == "constant" ? LoadTime::Constant : LoadTime::Varying});
+      }
+    }
+    if (const Json* q0 = loads.find("q0"); q0 && q0->as_number() != 0 && electric)
+      spec.volume_charge = make_load({q0->as_number()}, "constant");
+    if (const Json* qb = loads.find("q_b"); qb && qb->as_number() != 0 && electric)
+      for (const std::string& region : names_of(json.at("regions").at("charge")))
+        spec.surface_charges.push_back({region, make_load({qb->as_number()}, "constant"), LoadTime::Constant});
+  });
+
+  problems.check_void([&] {
+    if (spec.contact.empty()) return;
+    const Json& c = json.at("contact");
+    require_known_keys(c, {"law_normal", "c_nu", "m", "gap", "law_tangential", "c_tau", "mu", "g", "eps"});
+    spec.normal.type = c.at("law_normal").as_string();
+    spec.normal.c_nu = c.at("c_nu").as_number_at_least(0);
+    if (const Json* m = c.find("m")) spec.normal.m = m->as_number_at_least(1);
+    if (const Json* g = c.find("gap")) spec.normal.gap = g->as_number();
+    spec.friction.type = c.contains("law_tangential") ? c.at("law_tangential").as_string() : "none";
+    if (const Json* x = c.find("c_tau")) spec.friction.c_tau = x->as_number_at_least(0);
+    if (const Json* x = c.find("mu")) spec.friction.mu = x->as_number_at_least(0);
+    if (const Json* x = c.find("g")) spec.friction.g = x->as_number_at_least(0);
+    if (const Json* x = c.find("eps")) spec.friction.eps = x->as_positive();
+  });
+
+  problems.check_void([&] {
+    const Json& f = json.at("foundation");
+    for (const auto& [name, value] : f.members()) {
+      if (const auto foundation = problems.check([&] { return read_foundation(value); })) {
+        require(electric || foundation->type == "insulated", "scene: '", value.path(), "': a ", foundation->type,
+                " foundation needs a piezoelectric body (material.piezo_E)");
+        scene.foundations.push_back({name, *foundation});
+      }
+    }
+    require(f.size() > 0, "scene: 'foundation' lists no foundation to run");
+  });
+
+  problems.check_void([&] {
+    const Json& t = json.at("time");
+    require_known_keys(t, {"T", "steps", "u0", "v0", "prediction"});
+    scene.end_time = t.at("T").as_positive();
+    scene.steps = t.at("steps").as_int_at_least(1);
+    scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
+    scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
+    const std::string p = t.contains("prediction") ? t.at("prediction").as_string() : "previous";
+    require(p == "zero" || p == "previous", "scene: 'time.prediction' must be zero (the paper's) or previous, got '",
+            p, "'");
+    scene.prediction = p == "zero" ? Prediction::Zero : Prediction::Previous;
+  });
+
+  problems.check_void([&] {
+    const Json* s = json.find("solver");
+    if (!s) return;
+    require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "cutback_factor"});
+    if (const Json* x = s->find("linear")) {
+      scene.newton.linear_solver = x->as_string();
+      make_linear_solver(scene.newton.linear_solver);  // an unknown name fails here, listing the known ones
+    }
+    if (const Json* x = s->find("max_iterations")) scene.newton.max_iterations = x->as_int_at_least(1);
+    if (const Json* x = s->find("relative_tolerance")) scene.newton.relative_tolerance = x->as_number_in(0, 1);
+    if (const Json* x = s->find("line_search")) scene.newton.line_search = x->as_bool();
+    if (const Json* x = s->find("cutback_factor")) {
+      scene.cutback_factor = x->as_number_in(0, 1);
+      require(scene.cutback_factor > 0 && scene.cutback_factor < 1, "scene: 'solver.cutback_factor' must be in (0, 1)");
+    }
+  });
+
+  problems.check_void([&] {
+    const Json* o = json.find("output");
+    if (!o) return;
+    require_known_keys(*o, {"vtu_every", "progress_every", "probes", "grid", "slip_threshold", "phi_f_sweep",
+                            "sweep_steps"});
+    SceneOutput& out = scene.output;
+    if (const Json* x = o->find("vtu_every")) out.vtu_every = x->as_int_at_least(1);
+    if (const Json* x = o->find("progress_every")) out.progress_every = x->as_int_at_least(1);
+    if (const Json* p = o->find("probes")) {
+      require_known_keys(*p, {"corner", "center"});
+      const auto corner = p->at("corner").as_vector(size_t(dim)), center = p->at("center").as_vector(size_t(dim));
+      for (int d = 0; d < dim; ++d) out.corner[d] = corner[d], out.center[d] = center[d];
+    }
+    if (const Json* g = o->find("grid")) {
+      const auto x = g->at("x").as_vector(3), y = g->at("y").as_vector(3);
+      require(x[2] >= 1 && y[2] >= 1 && x[2] == std::floor(x[2]) && y[2] == std::floor(y[2]), "scene: '", g->path(),
+              "': the third entry of x and y is a number of points (>= 1)");
+      out.grid = {x[0], x[1], y[0], y[1], int(x[2]), int(y[2])};
+    }
+    if (const Json* x = o->find("slip_threshold")) out.slip_threshold = x->as_number_at_least(0);
+    if (const Json* x = o->find("phi_f_sweep")) out.phi_f_sweep = x->as_vector();
+    if (const Json* x = o->find("sweep_steps")) out.sweep_steps = x->as_int_at_least(1);
+  });
+  spec.slip_threshold = scene.output.slip_threshold;
+
+  problems.throw_if_any(scene.name);
+  return scene;
+}
+
+Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  Json json = read_json_file(path);
+  for (const std::string& o : overrides) {
+    const auto eq = o.find('=');
+    require(eq != std::string::npos && eq > 0, "--set '", o, "': expected key=value, e.g. --set contact.c_nu=1e14");
+    json.set_path(o.substr(0, eq), parse_json_value_from_cli(o.substr(eq + 1)));
+  }
+  return load_scene(json, std::filesystem::path(path).parent_path().string());
+}
+
+}  // namespace pc

@@ -1,0 +1,60 @@
+#pragma once
+// A scene file (JSON) read into everything a run needs: the mesh, the physics it contains (which decides
+// the bricks, see piezo_contact_recipe.hpp), the foundations to run, time span, solver and outputs.
+// Loading validates the whole scene before anything is computed and reports every problem at once, each
+// with the dotted path of the offending value ("contact.c_nu must be a number, got a string").
+// The format is documented in docs/scenes.md; scenes/paper2d.json is the paper's test.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "models/json.hpp"
+#include "models/newton.hpp"
+#include "models/piezo_contact_recipe.hpp"
+#include "models/stepper.hpp"
+
+namespace pc {
+
+struct SceneFoundation {
+  std::string name;  // the key in "foundation": a run writes into OUT/<name>/
+  FoundationSpec spec;
+};
+
+struct SceneGrid {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  int nx = 0, ny = 0;  // sample points along each axis
+};
+
+struct SceneOutput {
+  int vtu_every = 10;
+  int progress_every = 20;
+  std::array<double, 3> corner{}, center{};  // probes of history.csv and summary.json
+  SceneGrid grid;
+  double slip_threshold = 0;                 // m/s: a contact node with |v_tau| above it slides
+  std::vector<double> phi_f_sweep;           // foundation voltages for Figure 5 (conductive runs)
+  int sweep_steps = 0;                       // time steps of each sweep run (0: the scene's)
+};
+
+struct Scene {
+  Json json;  // the scene as read, after --set overrides
+  std::string name;
+  std::string mesh_description;  // e.g. "60 x 20 triangle, P1"
+  int nx = 0, ny = 0;            // structured meshes only
+  PiezoContactSpec spec;         // everything but the foundation
+  std::vector<double> u0, v0;    // constant initial displacement and velocity
+  std::vector<SceneFoundation> foundations;
+  double end_time = 0;
+  int steps = 0;
+  Prediction prediction = Prediction::Previous;
+  NewtonOptions newton;
+  double cutback_factor = 0.5;
+  SceneOutput output;
+};
+
+// Validates and builds (meshes included); throws one pc::Error listing every problem found.
+// `directory` resolves relative paths in the scene (a gmsh file).
+Scene load_scene(const Json& json, const std::string& directory);
+// Reads the file, applies overrides "a.b=value" (the value parsed as JSON when it parses), loads.
+Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace pc

@@ -1,0 +1,300 @@
+#include "models/scene_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "assembly/atomic_file.hpp"
+#include "assembly/error.hpp"
+#include "assembly/point_locator.hpp"
+#include "models/boundary_table.hpp"
+#include "models/csv_log.hpp"
+#include "models/result_series.hpp"
+
+namespace pc {
+namespace {
+
+// Value of one component of a field at a point (0 if the model has no such field).
+double probe(const Model& m, const PointLocator& locator, const std::string& field, int component,
+             const std::array<double, 3>& x) {
+  if (!m.has_field(field)) return 0;
+  return evaluate_at(m.space(field), m.values(field), locator, x.data())[component];
+}
+
+// Contact pressure at the mesh nodes (zero off the contact boundary), as VTU point data.
+std::vector<double> nodal_contact_pressure(const PiezoContactModel& built, const PiezoContactSpec& spec) {
+  const Model& m = *built.model;
+  const Mesh& mesh = m.mesh();
+  std::vector<double> pressure(mesh.num_nodes(), 0.0);
+  if (spec.contact.empty()) return pressure;
+  const FESpace& space = m.space("v");
+  const Eigen::VectorXd& argument = m.values(built.contact_argument);
+  const int dim = mesh.dim();
+  for (const FaceRef& f : mesh.face_region(spec.contact)) {
+    const auto dofs = space.cell_scalar_dofs(f.cell);
+    const auto vertices = face_vertices(mesh.cell_shape(), f.local_face);
+    for (int local : vertices) {  // vertex dofs come first, in the cell's vertex order
+      double r[3] = {0, 0, 0};
+      for (int d = 0; d < dim; ++d) r[d] = argument[space.dof(dofs[local], d)];
+      pressure[mesh.cell(f.cell)[local]] = built.contact_pressure(r, built.contact_normal.data(), dim);
+    }
+  }
+  return pressure;
+}
+
+std::string eta(double elapsed, double done_fraction) {
+  if (done_fraction <= 0) return "?";
+  const double left = elapsed * (1 - done_fraction) / done_fraction;
+  return left < 90 ? message(int(left + 0.5), " s") : message(int(left / 60 + 0.5), " min");
+}
+
+void write_final_tables(const Scene& scene, const PiezoContactModel& built, const PointLocator& locator,
+                        const std::string& dir, FoundationRunResult& r) {
+  const Model& m = *built.model;
+  const Mesh& mesh = m.mesh();
+  const int dim = mesh.dim();
+  const bool electric = m.has_field("phi");
+  auto at = [&](const std::string& field, int c, const std::array<double, 3>& x) {
+    return probe(m, locator, field, c, x);
+  };
+
+  // Contact boundary, sorted by x.
+  if (!scene.spec.contact.empty()) {
+    const BoundaryNodes nodes = boundary_nodes(m.space("v"), scene.spec.contact, 0);
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < nodes.points.size(); ++i) {
+      const auto& x = nodes.points[i];
+      double v[3] = {0, 0, 0}, arg[3] = {0, 0, 0};
+      for (int d = 0; d < dim; ++d) {
+        v[d] = at("v", d, x);
+        arg[d] = at(built.contact_argument, d, x);
+      }
+      std::vector<double> row = {x[0]};
+      if (dim == 3) row.push_back(x[2]);
+      for (int d = 0; d < dim; ++d) row.push_back(at("u", d, x));
+      for (int d = 0; d < dim; ++d) row.push_back(v[d]);
+      row.push_back(electric ? at("phi", 0, x) : 0.0);
+      row.push_back(built.contact_pressure(arg, built.contact_normal.data(), dim));
+      rows.push_back(row);
+      double vn = 0, vt2 = 0;
+      for (int d = 0; d < dim; ++d) vn += v[d] * built.contact_normal[d];
+      for (int d = 0; d < dim; ++d) vt2 += std::pow(v[d] - vn * built.contact_normal[d], 2);
+      r.max_abs_vtau_contact = std::max(r.max_abs_vtau_contact, std::sqrt(vt2));
+    }
+    std::vector<std::string> columns = dim == 2 ? std::vector<std::string>{"x", "ux", "uy", "vx", "vy", "phi", "contact_pressure"}
+                                                : std::vector<std::string>{"x", "z", "ux", "uy", "uz", "vx", "vy", "vz", "phi",
+                                                                           "contact_pressure"};
+    if (!dir.empty()) write_csv(dir + "/gamma_c.csv", columns, rows);
+  }
+  if (dir.empty()) return;
+
+  // The output grid (x fastest), in the plane z = 0 for 3D scenes.
+  const SceneGrid& g = scene.output.grid;
+  if (g.nx > 0 && g.ny > 0) {
+    std::vector<std::vector<double>> rows;
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const std::array<double, 3> x = {g.nx > 1 ? g.x0 + (g.x1 - g.x0) * i / (g.nx - 1) : g.x0,
+                                         g.ny > 1 ? g.y0 + (g.y1 - g.y0) * j / (g.ny - 1) : g.y0, 0.0};
+        rows.push_back({x[0], x[1], at("u", 0, x), at("u", 1, x), electric ? at("phi", 0, x) : 0.0});
+      }
+    write_csv(dir + "/grid.csv", {"x", "y", "ux", "uy", "phi"}, rows);
+  }
+
+  // The final state on the mesh, for the figures (2D).
+  if (dim != 2) return;
+  std::vector<std::vector<double>> node_rows;
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    const std::array<double, 3> x = {mesh.node(n)[0], mesh.node(n)[1], 0};
+    node_rows.push_back({double(n), x[0], x[1], at("u", 0, x), at("u", 1, x), at("v", 0, x), at("v", 1, x),
+                         electric ? at("phi", 0, x) : 0.0});
+  }
+  write_csv(dir + "/final_nodes.csv", {"node", "x", "y", "ux", "uy", "vx", "vy", "phi"}, node_rows);
+  const std::vector<double> stress = cell_stress(m, built.material);
+  const int voigt = 3;
+  std::vector<std::vector<double>> cell_rows;
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const auto nodes = mesh.cell(c);
+    const double vm = von_mises(std::span<const double>(stress.data() + c * voigt, voigt), dim);
+    double phi_mean = 0;
+    for (int n : nodes) phi_mean += node_rows[n][7] / double(nodes.size());
+    // Quadrilaterals are written as two triangles, so the table is always a triangulation.
+    cell_rows.push_back({double(nodes[0]), double(nodes[1]), double(nodes[2]), vm, phi_mean});
+    if (nodes.size() == 4) cell_rows.push_back({double(nodes[0]), double(nodes[2]), double(nodes[3]), vm, phi_mean});
+  }
+  write_csv(dir + "/final_cells.csv", {"n0", "n1", "n2", "von_mises", "phi_mean"}, cell_rows);
+}
+
+void write_summary(const Scene& scene, const std::string& dir, const FoundationRunResult& r, int steps) {
+  Json s = Json::object();
+  s.set("scene", Json(scene.name));
+  s.set("foundation", Json(r.foundation));
+  s.set("mesh", Json(scene.mesh_description));
+  s.set("nx", Json(double(scene.nx)));
+  s.set("ny", Json(double(scene.ny)));
+  s.set("order", Json(double(scene.spec.order)));
+  s.set("steps", Json(double(steps)));
+  s.set("completed", Json(r.completed));
+  s.set("ndof", Json(double(r.ndof)));
+  s.set("newton_iterations_total", Json(double(r.newton_iterations_total)));
+  s.set("newton_iterations_max_per_step", Json(double(r.newton_iterations_max_per_step)));
+  s.set("wall_s_total", Json(r.wall_seconds));
+  s.set("max_abs_ux", Json(r.max_abs_ux));
+  s.set("max_abs_uy", Json(r.max_abs_uy));
+  s.set("phi_min", Json(r.phi_min));
+  s.set("phi_max", Json(r.phi_max));
+  s.set("ux_corner", Json(r.ux_corner));
+  s.set("uy_corner", Json(r.uy_corner));
+  s.set("phi_center", Json(r.phi_center));
+  s.set("max_abs_vtau_contact", Json(r.max_abs_vtau_contact));
+  s.set("n_contact_nodes", Json(double(r.n_contact_nodes)));
+  s.set("n_slip_nodes", Json(double(r.n_slip_nodes)));
+  s.set("slip_threshold", Json(scene.output.slip_threshold));
+  if (!r.message.empty()) s.set("message", Json(r.message));
+  write_atomically(dir + "/summary.json", "summary", [&](std::ostream& out) { out << s.dump(2) << "\n"; });
+}
+
+}  // namespace
+
+FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& dir,
+                                   bool progress, int steps_override) {
+  const auto start = std::chrono::steady_clock::now();
+  FoundationRunResult result;
+  result.foundation = foundation.name;
+  PiezoContactSpec spec = scene.spec;
+  spec.foundation = foundation.spec;
+  PiezoContactModel built = build_piezo_contact_model(spec);
+  Model& m = *built.model;
+  const Mesh& mesh = m.mesh();
+  const int dim = mesh.dim();
+  for (const std::string& u : m.unknowns()) result.ndof += m.space(u).num_dofs();
+
+  const FESpace& vspace = m.space("v");
+  auto constant = [&](const std::vector<double>& value) {
+    return vspace.interpolate([&](const double*, double* out) {
+      for (int d = 0; d < dim; ++d) out[d] = value[d];
+    });
+  };
+  built.scheme->set_initial_state(m, constant(scene.u0), constant(scene.v0));
+
+  const int steps = steps_override > 0 ? steps_override : scene.steps;
+  StepperOptions options;
+  options.start = 0;
+  options.end = scene.end_time;
+  options.step = scene.end_time / steps;
+  options.cutback_factor = scene.cutback_factor;
+  options.prediction = scene.prediction;
+  options.output_every = scene.output.vtu_every;
+  NewtonSolver newton(scene.newton);
+  const PointLocator locator(mesh);
+  const bool electric = m.has_field("phi");
+
+  std::unique_ptr<CsvLog> history;
+  std::unique_ptr<ResultSeries> series;
+  if (!dir.empty()) {
+    std::filesystem::create_directories(dir);
+    history = std::make_unique<CsvLog>(dir + "/history.csv",
+                                       std::vector<std::string>{"t", "uy_corner", "phi_center", "newton_iterations"});
+    series = std::make_unique<ResultSeries>(dir, scene.name);
+  }
+  StepperCallbacks callbacks;
+  callbacks.on_step = [&](const Model& model, const StepRecord& r) {
+    if (history)
+      history->row({r.time, probe(model, locator, "u", 1, scene.output.corner),
+                    electric ? probe(model, locator, "phi", 0, scene.output.center) : 0.0,
+                    double(r.newton.iterations)});
+    if (progress && (r.step % scene.output.progress_every == 0 || r.step == 1)) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::string residuals;
+      for (double norm : r.newton.history.back().residual_norms) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%s%.2e", residuals.empty() ? "" : " / ", norm);
+        residuals += text;
+      }
+      std::printf("  [%s] step %d/%d  t = %.4g s  Newton %d (%s)  |R| = %s  in contact %g, sliding %g  left ~%s\n",
+                  foundation.name.c_str(), r.step, steps, r.time, r.newton.iterations, to_string(r.newton.outcome).c_str(),
+                  residuals.c_str(),
+                  r.newton.diagnostics.count("contact_nodes_in_compression") ? r.newton.diagnostics.at("contact_nodes_in_compression") : 0.0,
+                  r.newton.diagnostics.count("contact_nodes_in_slip") ? r.newton.diagnostics.at("contact_nodes_in_slip") : 0.0,
+                  eta(elapsed, r.time / scene.end_time).c_str());
+      std::fflush(stdout);
+    }
+  };
+  callbacks.on_output = [&](const Model& model, const StepRecord& r) {
+    if (!series) return;
+    VtuWriter writer(mesh);
+    add_piezo_output(writer, model, built.material);
+    writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built, spec));
+    series->write(r.step, r.time, writer);
+  };
+
+  const RunSummary run = Stepper(options).run(m, *built.scheme, newton, callbacks);
+  result.completed = run.completed;
+  result.steps = run.steps;
+  result.newton_iterations_total = run.newton_iterations_total;
+  result.newton_iterations_max_per_step = run.newton_iterations_max_per_step;
+  result.message = run.message;
+
+  const Eigen::VectorXd& u = m.values("u");
+  for (int s = 0; s < vspace.num_scalar_dofs(); ++s) {
+    result.max_abs_ux = std::max(result.max_abs_ux, std::abs(u[vspace.dof(s, 0)]));
+    result.max_abs_uy = std::max(result.max_abs_uy, std::abs(u[vspace.dof(s, 1)]));
+  }
+  if (electric) {
+    result.phi_min = m.values("phi").minCoeff();
+    result.phi_max = m.values("phi").maxCoeff();
+    result.phi_center = probe(m, locator, "phi", 0, scene.output.center);
+  }
+  result.ux_corner = probe(m, locator, "u", 0, scene.output.corner);
+  result.uy_corner = probe(m, locator, "u", 1, scene.output.corner);
+  const auto diagnostics = m.diagnostics();
+  if (diagnostics.count("contact_nodes_in_slip")) {
+    result.n_slip_nodes = int(diagnostics.at("contact_nodes_in_slip"));
+    result.n_contact_nodes = int(diagnostics.at("contact_nodes_in_compression"));
+  }
+  write_final_tables(scene, built, locator, dir, result);
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!dir.empty()) write_summary(scene, dir, result, steps);
+  return result;
+}
+
+bool run_scene(const Scene& scene, const SceneRunOptions& options) {
+  bool all_completed = true;
+  const std::string& out = options.output_directory;
+  for (const SceneFoundation& f : scene.foundations) {
+    if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), f.name) == options.only.end())
+      continue;
+    if (options.progress) std::printf("%s, %s foundation: %s\n", scene.name.c_str(), f.name.c_str(), scene.mesh_description.c_str());
+    const FoundationRunResult r = run_foundation(scene, f, out.empty() ? "" : out + "/" + f.name, options.progress);
+    all_completed = all_completed && r.completed;
+    if (options.progress)
+      std::printf("  %s: %s in %.2f s, %d Newton iterations (max %d per step); max|ux| = %.4g m, max|uy| = %.4g m, "
+                  "phi in [%.4g, %.4g] V%s\n",
+                  f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.newton_iterations_total,
+                  r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy, r.phi_min, r.phi_max,
+                  r.message.empty() ? "" : ("; " + r.message).c_str());
+  }
+
+  // Figure 5: final displacement against the foundation voltage.
+  const auto conductive = std::find_if(scene.foundations.begin(), scene.foundations.end(),
+                                       [](const SceneFoundation& f) { return f.spec.type != "insulated"; });
+  if (options.sweep && !scene.output.phi_f_sweep.empty() && conductive != scene.foundations.end() && !out.empty()) {
+    std::vector<std::vector<double>> rows;
+    for (double phi_f : scene.output.phi_f_sweep) {
+      SceneFoundation f = *conductive;
+      f.spec.phi_f = phi_f;
+      const FoundationRunResult r = run_foundation(scene, f, "", false, scene.output.sweep_steps);
+      all_completed = all_completed && r.completed;
+      rows.push_back({phi_f, r.max_abs_ux, r.max_abs_uy, r.ux_corner, r.uy_corner});
+      if (options.progress)
+        std::printf("  sweep phi_f = %g V: max|ux| = %.4g m, max|uy| = %.4g m\n", phi_f, r.max_abs_ux, r.max_abs_uy);
+      write_csv(out + "/sweep_phi_f.csv", {"phi_f", "max_abs_ux", "max_abs_uy", "ux_corner", "uy_corner"}, rows);
+    }
+  }
+  return all_completed;
+}
+
+}  // namespace pc

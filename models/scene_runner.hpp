@@ -1,0 +1,43 @@
+#pragma once
+// Runs a scene: one time-dependent run per foundation of the scene, each writing into OUT/<foundation>/
+//   summary.json   key numbers of the run (see README, "Reading the results")
+//   history.csv    t, uy_corner, phi_center, newton_iterations: one row per step, written as it goes
+//   gamma_c.csv    x, ux, uy, vx, vy, phi, contact_pressure at the contact nodes, final time, sorted by x
+//   grid.csv       x, y, ux, uy, phi sampled on the scene's output grid (x fastest), final time
+//   final_nodes.csv, final_cells.csv   the final state on the mesh (for the figures)
+//   <name>.pvd + <name>_<step>.vtu     ParaView time series, every output.vtu_every steps and step 0
+// and, when the scene asks for it, OUT/sweep_phi_f.csv: the final displacement against the foundation
+// voltage (conductive foundation), for Figure 5.
+#include <functional>
+#include <string>
+
+#include "models/scene.hpp"
+
+namespace pc {
+
+struct SceneRunOptions {
+  std::string output_directory;
+  bool progress = true;                 // progress lines on stdout
+  std::vector<std::string> only;        // run only these foundations (empty: all)
+  bool sweep = true;                    // run the phi_f sweep if the scene has one
+};
+
+struct FoundationRunResult {
+  std::string foundation;
+  bool completed = false;
+  int steps = 0, ndof = 0, newton_iterations_total = 0, newton_iterations_max_per_step = 0;
+  double wall_seconds = 0;
+  double max_abs_ux = 0, max_abs_uy = 0, phi_min = 0, phi_max = 0, uy_corner = 0, ux_corner = 0, phi_center = 0;
+  double max_abs_vtau_contact = 0;
+  int n_slip_nodes = 0, n_contact_nodes = 0;
+  std::string message;
+};
+
+// Runs one foundation of the scene; with an empty directory nothing is written (studies, tests).
+FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& directory,
+                                   bool progress, int steps_override = 0);
+
+// Runs the scene as SceneRunOptions say; returns false if a run did not complete.
+bool run_scene(const Scene& scene, const SceneRunOptions& options);
+
+}  // namespace pc
