@@ -143,6 +143,7 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
     require(spec.foundation.type == "insulated", "foundation '", spec.foundation.type,
             "' needs a contact region (regions.contact)");
   }
+  if (spec.extra_bricks) spec.extra_bricks(m);
   m.finalize();
   return built;
 }

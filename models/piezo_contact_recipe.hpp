@@ -61,6 +61,8 @@ struct PiezoContactSpec {
   FrictionLawSpec friction;
   FoundationSpec foundation;
   double slip_threshold = 0;          // |v_tau| above which a contact node counts as sliding
+  // Called after the recipe's bricks and before finalize(): a user's own bricks (e.g. a new law).
+  std::function<void(Model&)> extra_bricks;
 };
 
 struct PiezoContactModel {
