@@ -108,3 +108,22 @@ TEST(PaperScene, InvalidScenesAreRefusedWithEveryProblemAndItsPath) {
 
 }  // namespace
 }  // namespace pc
+
+namespace pc {
+namespace {
+
+// Every shipped scene loads, and runs a few steps of each foundation with every Newton solve converged.
+TEST(ShippedScenes, LoadAndRunAFewSteps) {
+  for (const char* name : {"paper2d.json", "strip2d.json", "box3d.json"}) {
+    const Scene scene =
+        load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/" + name, {"time.steps=2", "time.T=0.002"});
+    for (const SceneFoundation& f : scene.foundations) {
+      const FoundationRunResult r = run_foundation(scene, f, "", false);
+      EXPECT_TRUE(r.completed) << name << " / " << f.name << ": " << r.message;
+      EXPECT_EQ(r.steps, 2) << name << " / " << f.name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pc
