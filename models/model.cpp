@@ -45,7 +45,12 @@ struct Model::System {
   std::unique_ptr<SystemMatrix> matrix;
   std::vector<std::vector<std::vector<int>>> handles;  // [brick][term][coupling]
   std::vector<double> linear_values;
-  std::uint64_t linear_stamp = ~std::uint64_t(0);
+  std::uint64_t linear_stamp = ~std::uint64_t(0);  // linear_version_ the sum was made with
+  std::vector<double> linear_factors;              // affine factors it was made with
+  std::uint64_t linear_sum = 0;                    // Model::linear_sums_ when it was last made
+  std::vector<int> nonlinear_dofs;                 // free dofs that nonlinear blocks touch, sorted
+  CsrMatrix linear_matrix;                         // the linear sum as a matrix, made on request
+  std::uint64_t linear_matrix_sum = 0;
 };
 
 namespace {
@@ -134,7 +139,6 @@ void Model::set_affine(const std::string& name, double factor, std::vector<doubl
   require(history_coefficients.size() == f.history.size(), "Model: affine field '", name, "' has ",
           f.history.size(), " history fields, got ", history_coefficients.size(), " coefficients");
   require(std::isfinite(factor), "Model: affine factor of '", name, "' is not finite: ", factor);
-  if (f.factor != factor) ++linear_version_;  // the cached sum of linear blocks holds the old factor
   f.factor = factor;
   f.coefficients = std::move(history_coefficients);
 }
@@ -361,6 +365,23 @@ Model::System& Model::system() {
     }
   }
   s.matrix->finalize();
+  // The dofs the nonlinear bricks touch: only their rows and columns of the Jacobian change inside a step.
+  std::set<int> touched;
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    if (bricks_[b]->linear()) continue;
+    for (const BoundTerm& bt : brick_states_[b]->terms)
+      for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
+        const CsrMatrix& block = bt.assembly->block(int(k));
+        const auto rows = s.layout.global_indices(s.layout.field_index(bt.field_names[bt.assembly->term().couplings()[k].test]));
+        const auto cols = s.layout.global_indices(s.layout.field_index(bt.trial_unknowns[k]));
+        for (int r = 0; r < block.rows(); ++r)
+          for (CsrMatrix::InnerIterator it(block, r); it; ++it) {
+            if (rows[r] >= 0) touched.insert(rows[r]);
+            if (cols[it.col()] >= 0) touched.insert(cols[it.col()]);
+          }
+      }
+  }
+  s.nonlinear_dofs.assign(touched.begin(), touched.end());
   return s;
 }
 
@@ -513,9 +534,14 @@ void Model::assemble(bool tangent) {
   }
 
   if (tangent) {
-    if (s.linear_stamp != linear_version_) {
+    std::vector<double> factors;
+    for (const auto& [name, f] : fields_)
+      if (f->kind == FieldKind::Affine) factors.push_back(f->factor);
+    if (s.linear_stamp != linear_version_ || s.linear_factors != factors) {
       refresh_linear_sum(s);
       s.linear_stamp = linear_version_;
+      s.linear_factors = factors;
+      s.linear_sum = ++linear_sums_;
     }
     s.matrix->set_values(s.linear_values);
     for (int b = 0; b < int(bricks_.size()); ++b) {
@@ -544,6 +570,21 @@ void Model::add_to_free_values(const Eigen::VectorXd& step) {
   const DofLayout& l = layout();
   for (const std::string& u : unknown_names_) l.add_from_global(l.field_index(u), step, field(u).values);
 }
+
+const CsrMatrix& Model::linear_jacobian() {
+  System& s = system();
+  require(s.linear_sum > 0, "Model: linear_jacobian() before assemble(true)");
+  if (s.linear_matrix_sum != s.linear_sum) {
+    s.linear_matrix = s.matrix->matrix();
+    std::copy(s.linear_values.begin(), s.linear_values.end(), s.linear_matrix.valuePtr());
+    s.linear_matrix_sum = s.linear_sum;
+  }
+  return s.linear_matrix;
+}
+
+std::uint64_t Model::linear_jacobian_version() { return system().linear_sum; }
+
+const std::vector<int>& Model::nonlinear_dofs() { return system().nonlinear_dofs; }
 
 void Model::invalidate_caches() {
   for (auto& state : brick_states_) {

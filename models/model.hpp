@@ -92,6 +92,14 @@ class Model : public DataView {
   void assemble(bool tangent);
   const Eigen::VectorXd& residual() const { return residual_; }
   const CsrMatrix& jacobian() const;
+  // The sum of the linear bricks' blocks with the current factors (the Jacobian without the nonlinear
+  // bricks), with the Jacobian's pattern; its version changes only when that sum was recomputed (a new
+  // step size, a changed datum), so a factorisation of it can be kept across Newton iterations and steps.
+  const CsrMatrix& linear_jacobian();
+  std::uint64_t linear_jacobian_version();
+  // The free dofs (global numbering) whose rows or columns the nonlinear bricks fill: J - linear_jacobian()
+  // vanishes outside these rows and columns (for the paper, the contact boundary's dofs).
+  const std::vector<int>& nonlinear_dofs();
   // Residual of one unknown in its field numbering (all dofs, constrained ones included): reactions.
   const Eigen::VectorXd& field_residual(const std::string& unknown) const;
   // Per unknown, the norm (on free dofs) of the largest single brick contribution to the last residual:
@@ -141,7 +149,8 @@ class Model : public DataView {
   std::map<std::string, double> residual_scales_;
   Eigen::VectorXd residual_;
   std::uint64_t clock_ = 0;           // version source for constants and data fields
-  std::uint64_t linear_version_ = 1;  // changes when a linear block or an affine factor changes
+  std::uint64_t linear_version_ = 1;  // changes when a linear brick's blocks change
+  std::uint64_t linear_sums_ = 0;     // counts recomputations of the linear sum
   double time_ = 0;
   bool finalized_ = false;
 };

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <Eigen/LU>
+
 #include "assembly/error.hpp"
 
 namespace pc {
@@ -49,6 +51,113 @@ NewtonSolver::NewtonSolver(NewtonOptions options) : options_(std::move(options))
   linear_ = make_linear_solver(options_.linear_solver);
 }
 
+Eigen::VectorXd NewtonSolver::full_step(Model& model, NewtonReport& report) {
+  const CsrMatrix& J = model.jacobian();
+  if (analyzed_matrix_ != &J || analyzed_nonzeros_ != J.nonZeros()) {
+    const auto t = Clock::now();
+    linear_->analyze(J);
+    report.analyze_seconds += seconds_since(t);
+    analyzed_matrix_ = &J;
+    analyzed_nonzeros_ = J.nonZeros();
+    ++analyses_;
+  }
+  auto t = Clock::now();
+  linear_->factorize(J);
+  report.factorize_seconds += seconds_since(t);
+  ++report.factorizations;
+  t = Clock::now();
+  Eigen::VectorXd dx = linear_->solve(-model.residual());
+  report.solve_seconds += seconds_since(t);
+  return dx;
+}
+
+bool NewtonSolver::condensation_applies(Model& model) const {
+  if (options_.condensed_max_fraction <= 0) return false;
+  if (linear_part_singular_ && linear_part_model_ == &model) return false;
+  const double m = double(model.nonlinear_dofs().size());
+  return m > 0 && m <= options_.condensed_max_fraction * model.layout().size();
+}
+
+// J = A + P^T D P, with A the linear part and D the nonlinear part on the m nonlinear dofs (P selects
+// them). With y = A^-1 b and S = P A^-1 P^T: (I + S D) z = P y, then dx = A^-1 (b - P^T D z).
+Eigen::VectorXd NewtonSolver::condensed_step(Model& model, NewtonReport& report) {
+  try {
+    return condensed_step_or_throw(model, report);
+  } catch (const Error&) {
+    // The linear part alone is singular (e.g. a body held only by its contact): solve in full from now
+    // on; a genuinely singular J then fails there with the solver's message.
+    linear_part_singular_ = true;
+    linear_part_model_ = &model;
+    report.condensed = false;
+    return full_step(model, report);
+  }
+}
+
+Eigen::VectorXd NewtonSolver::condensed_step_or_throw(Model& model, NewtonReport& report) {
+  report.condensed = true;
+  const std::vector<int>& nonlinear = model.nonlinear_dofs();
+  const int m = static_cast<int>(nonlinear.size());
+  const CsrMatrix& A = model.linear_jacobian();
+  const int n = static_cast<int>(A.rows());
+  if (!linear_part_) linear_part_ = make_linear_solver(options_.linear_solver);
+  if (linear_part_model_ != &model || linear_part_version_ != model.linear_jacobian_version() ||
+      capacitance_.rows() != m) {
+    auto t = Clock::now();
+    if (!linear_part_->is_analyzed_for(A)) {
+      linear_part_->analyze(A);
+      report.analyze_seconds += seconds_since(t);
+      ++analyses_;
+    }
+    t = Clock::now();
+    linear_part_->factorize(A);
+    report.factorize_seconds += seconds_since(t);
+    ++report.factorizations;
+    t = Clock::now();
+    position_.assign(n, -1);
+    for (int i = 0; i < m; ++i) position_[nonlinear[i]] = i;
+    capacitance_.resize(m, m);
+    Eigen::VectorXd unit = Eigen::VectorXd::Zero(n);
+    for (int j = 0; j < m; ++j) {
+      unit[nonlinear[j]] = 1;
+      const Eigen::VectorXd column = linear_part_->solve(unit);
+      unit[nonlinear[j]] = 0;
+      for (int i = 0; i < m; ++i) capacitance_(i, j) = column[nonlinear[i]];
+    }
+    report.condensation_seconds += seconds_since(t);
+    linear_part_model_ = &model;
+    linear_part_version_ = model.linear_jacobian_version();
+    linear_part_singular_ = false;
+  }
+
+  // D: the difference J - A on the nonlinear rows and columns (the two share one pattern).
+  const CsrMatrix& J = model.jacobian();
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(m, m);
+  for (int i = 0; i < m; ++i) {
+    const int row = nonlinear[i];
+    for (int k = J.outerIndexPtr()[row]; k < J.outerIndexPtr()[row + 1]; ++k) {
+      const int j = position_[J.innerIndexPtr()[k]];
+      if (j >= 0) D(i, j) = J.valuePtr()[k] - A.valuePtr()[k];
+    }
+  }
+  const Eigen::VectorXd b = -model.residual();
+  auto t = Clock::now();
+  const Eigen::VectorXd y = linear_part_->solve(b);
+  report.solve_seconds += seconds_since(t);
+  if (D.isZero(0.0)) return y;
+  t = Clock::now();
+  Eigen::VectorXd Py(m);
+  for (int i = 0; i < m; ++i) Py[i] = y[nonlinear[i]];
+  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(m, m) + capacitance_ * D).partialPivLu().solve(Py);
+  const Eigen::VectorXd w = D * z;
+  Eigen::VectorXd corrected = b;
+  for (int i = 0; i < m; ++i) corrected[nonlinear[i]] -= w[i];
+  report.condensation_seconds += seconds_since(t);
+  t = Clock::now();
+  Eigen::VectorXd dx = linear_part_->solve(corrected);
+  report.solve_seconds += seconds_since(t);
+  return dx;
+}
+
 NewtonReport NewtonSolver::solve(Model& model) {
   const auto start = Clock::now();
   NewtonReport report;
@@ -91,30 +200,22 @@ NewtonReport NewtonSolver::solve(Model& model) {
 
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     report.iterations = iteration;
-    const CsrMatrix& J = model.jacobian();
     Eigen::VectorXd dx;
     try {
-      if (analyzed_matrix_ != &J || analyzed_nonzeros_ != J.nonZeros()) {
-        const auto t = Clock::now();
-        linear_->analyze(J);
-        report.analyze_seconds += seconds_since(t);
-        analyzed_matrix_ = &J;
-        analyzed_nonzeros_ = J.nonZeros();
-        ++analyses_;
-      }
-      auto t = Clock::now();
-      linear_->factorize(J);
-      report.factorize_seconds += seconds_since(t);
-      t = Clock::now();
-      dx = linear_->solve(-model.residual());
-      report.solve_seconds += seconds_since(t);
+      dx = condensation_applies(model) ? condensed_step(model, report) : full_step(model, report);
     } catch (const Error& e) {
       return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": ", e.what()));
     }
     if (!dx.allFinite()) return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": the Newton step is not finite"));
 
-    // Backtracking on the scaled residual: accept alpha when the merit drops by the Armijo fraction.
+    // Backtracking on the scaled residual: accept alpha when the merit drops by the Armijo fraction. A
+    // full step at round-off of the iterate (increment tolerance) is taken as is: the merit change it
+    // makes is noise, e.g. where a penalty (k_e = 1e15) sets the residual's floor above the tolerance.
     const double merit_before = merit(norms, reference);
+    const std::vector<double> full_steps = block_norms(layout, dx), sizes_before = block_norms(layout, model.free_values());
+    bool round_off_step = true;
+    for (int b = 0; b < n_blocks; ++b)
+      round_off_step = round_off_step && full_steps[b] <= options_.increment_tolerance * std::max(sizes_before[b], 1e-300);
     double alpha = 1, applied = 0;
     int backtracks = 0;
     std::vector<double> new_norms;
@@ -124,7 +225,8 @@ NewtonReport NewtonSolver::solve(Model& model) {
       assemble();
       new_norms = block_norms(layout, model.residual());
       const double m = merit(new_norms, reference);
-      const bool accept = !options_.line_search || (std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before);
+      const bool accept = !options_.line_search || round_off_step ||
+                          (std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before);
       if (accept || backtracks >= options_.max_backtracks) break;
       alpha *= options_.backtrack_factor;
       ++backtracks;

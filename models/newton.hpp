@@ -30,6 +30,12 @@ struct NewtonOptions {
   // The scaled residual growing by this factor over the first one means divergence.
   double divergence_factor = 1e12;
   std::string linear_solver = "umfpack";
+  // Condensed solve: when only a few dofs carry nonlinear terms (the contact boundary), factorise the
+  // linear part A once per step size and solve each iteration's J = A + P^T D P through the small
+  // capacitance system on those dofs (Sherman-Morrison-Woodbury): two solves with A's factors and a
+  // dense m x m solve per iteration, instead of a new factorisation. Used when the nonlinear dofs are at
+  // most this fraction of all; 0 disables it.
+  double condensed_max_fraction = 0.25;
 };
 
 enum class NewtonOutcome { Converged, MaxIterations, Diverged, SingularTangent };
@@ -48,6 +54,9 @@ struct NewtonReport {
   std::vector<std::string> blocks;       // the unknowns, in block order
   std::vector<NewtonIteration> history;  // history[0] is the initial residual
   double assembly_seconds = 0, analyze_seconds = 0, factorize_seconds = 0, solve_seconds = 0, total_seconds = 0;
+  double condensation_seconds = 0;  // building and solving the capacitance systems (condensed solve)
+  int factorizations = 0;           // sparse factorisations done by this solve
+  bool condensed = false;           // whether the condensed solve was used
   std::map<std::string, double> diagnostics;  // the model's, at the end
   std::string message;
   bool converged() const { return outcome == NewtonOutcome::Converged; }
@@ -64,11 +73,24 @@ class NewtonSolver {
   int analyses() const { return analyses_; }
 
  private:
+  // One Newton step dx with J dx = -R, by full factorisation or through the condensed system.
+  Eigen::VectorXd full_step(Model& model, NewtonReport& report);
+  Eigen::VectorXd condensed_step(Model& model, NewtonReport& report);
+  Eigen::VectorXd condensed_step_or_throw(Model& model, NewtonReport& report);
+  bool condensation_applies(Model& model) const;
+
   NewtonOptions options_;
   std::unique_ptr<LinearSolver> linear_;
   const CsrMatrix* analyzed_matrix_ = nullptr;
   long analyzed_nonzeros_ = -1;
   int analyses_ = 0;
+  // Condensed solve: A's factorisation, the version of A it was made for, and S = P A^-1 P^T.
+  std::unique_ptr<LinearSolver> linear_part_;
+  std::uint64_t linear_part_version_ = 0;
+  const Model* linear_part_model_ = nullptr;
+  Eigen::MatrixXd capacitance_;
+  std::vector<int> position_;  // position of a global dof among the nonlinear dofs, or -1
+  bool linear_part_singular_ = false;
 };
 
 }  // namespace pc

@@ -255,7 +255,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
 
   problems.check_void([&] {
     const Json& t = json.at("time");
-    require_known_keys(t, {"T", "steps", "u0", "v0", "prediction"});
+    require_known_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "theta"});
     scene.end_time = t.at("T").as_positive();
     scene.steps = t.at("steps").as_int_at_least(1);
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
@@ -267,9 +267,27 @@ Scene load_scene(const Json& json, const std::string& directory) {
   });
 
   problems.check_void([&] {
+    const Json& t = json.at("time");
+    TimeSchemeSpec& scheme = spec.scheme;
+    if (const Json* s = t.find("scheme")) scheme.type = s->as_string();
+    require(scheme.type == "backward_euler" || scheme.type == "bdf2" || scheme.type == "theta", "scene: 'time.scheme' "
+            "must be backward_euler (the paper's), bdf2 or theta, got '", scheme.type, "'");
+    if (const Json* theta = t.find("theta")) {
+      require(scheme.type == "theta", "scene: '", theta->path(), "' is read by the theta scheme only, but time.scheme "
+              "is ", scheme.type);
+      scheme.theta = theta->as_number();
+      require(scheme.theta > 0 && scheme.theta <= 1, "scene: '", theta->path(), "' must be in (0, 1] (0.5: "
+              "Crank-Nicolson, 1: backward Euler), got ", scheme.theta);
+    }
+  });
+
+  problems.check_void([&] {
     const Json* s = json.find("solver");
     if (!s) return;
-    require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "cutback_factor"});
+    require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "cutback_factor",
+                            "condensed"});
+    if (const Json* x = s->find("condensed"))
+      scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
     if (const Json* x = s->find("linear")) {
       scene.newton.linear_solver = x->as_string();
       make_linear_solver(scene.newton.linear_solver);  // an unknown name fails here, listing the known ones
