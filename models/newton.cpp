@@ -101,7 +101,7 @@ Eigen::VectorXd NewtonSolver::condensed_step_or_throw(Model& model, NewtonReport
   const int n = static_cast<int>(A.rows());
   if (!linear_part_) linear_part_ = make_linear_solver(options_.linear_solver);
   if (linear_part_model_ != &model || linear_part_version_ != model.linear_jacobian_version() ||
-      capacitance_.rows() != m) {
+      int(capacitance_columns_.size()) != m) {
     auto t = Clock::now();
     if (!linear_part_->is_analyzed_for(A)) {
       linear_part_->analyze(A);
@@ -112,45 +112,65 @@ Eigen::VectorXd NewtonSolver::condensed_step_or_throw(Model& model, NewtonReport
     linear_part_->factorize(A);
     report.factorize_seconds += seconds_since(t);
     ++report.factorizations;
-    t = Clock::now();
     position_.assign(n, -1);
     for (int i = 0; i < m; ++i) position_[nonlinear[i]] = i;
-    capacitance_.resize(m, m);
-    Eigen::VectorXd unit = Eigen::VectorXd::Zero(n);
-    for (int j = 0; j < m; ++j) {
-      unit[nonlinear[j]] = 1;
-      const Eigen::VectorXd column = linear_part_->solve(unit);
-      unit[nonlinear[j]] = 0;
-      for (int i = 0; i < m; ++i) capacitance_(i, j) = column[nonlinear[i]];
-    }
-    report.condensation_seconds += seconds_since(t);
+    capacitance_columns_.assign(m, Eigen::VectorXd());
     linear_part_model_ = &model;
     linear_part_version_ = model.linear_jacobian_version();
     linear_part_singular_ = false;
   }
 
-  // D: the difference J - A on the nonlinear rows and columns (the two share one pattern).
+  // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
+  // active dofs where D has a non-zero row or column (for contact, the nodes in compression).
+  auto t = Clock::now();
   const CsrMatrix& J = model.jacobian();
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(m, m);
+  std::vector<char> active(m, 0);
   for (int i = 0; i < m; ++i) {
     const int row = nonlinear[i];
     for (int k = J.outerIndexPtr()[row]; k < J.outerIndexPtr()[row + 1]; ++k) {
       const int j = position_[J.innerIndexPtr()[k]];
-      if (j >= 0) D(i, j) = J.valuePtr()[k] - A.valuePtr()[k];
+      if (j < 0) continue;
+      D(i, j) = J.valuePtr()[k] - A.valuePtr()[k];
+      if (D(i, j) != 0) active[i] = active[j] = 1;
     }
   }
+  std::vector<int> I;
+  for (int i = 0; i < m; ++i)
+    if (active[i]) I.push_back(i);
+  report.condensation_seconds += seconds_since(t);
+
   const Eigen::VectorXd b = -model.residual();
-  auto t = Clock::now();
+  t = Clock::now();
   const Eigen::VectorXd y = linear_part_->solve(b);
   report.solve_seconds += seconds_since(t);
-  if (D.isZero(0.0)) return y;
+  if (I.empty()) return y;
+
+  // Columns of S = P A^-1 P^T, computed once per factorisation of A for each dof that becomes active.
   t = Clock::now();
-  Eigen::VectorXd Py(m);
-  for (int i = 0; i < m; ++i) Py[i] = y[nonlinear[i]];
-  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(m, m) + capacitance_ * D).partialPivLu().solve(Py);
-  const Eigen::VectorXd w = D * z;
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(n);
+  for (int j : I) {
+    if (capacitance_columns_[j].size() > 0) continue;
+    unit[nonlinear[j]] = 1;
+    const Eigen::VectorXd column = linear_part_->solve(unit);
+    unit[nonlinear[j]] = 0;
+    capacitance_columns_[j].resize(m);
+    for (int i = 0; i < m; ++i) capacitance_columns_[j][i] = column[nonlinear[i]];
+  }
+  const int a = static_cast<int>(I.size());
+  Eigen::MatrixXd S(a, a), Da(a, a);
+  Eigen::VectorXd Py(a);
+  for (int q = 0; q < a; ++q) {
+    Py[q] = y[nonlinear[I[q]]];
+    for (int p = 0; p < a; ++p) {
+      S(p, q) = capacitance_columns_[I[q]][I[p]];
+      Da(p, q) = D(I[p], I[q]);
+    }
+  }
+  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + S * Da).partialPivLu().solve(Py);
+  const Eigen::VectorXd w = Da * z;
   Eigen::VectorXd corrected = b;
-  for (int i = 0; i < m; ++i) corrected[nonlinear[i]] -= w[i];
+  for (int q = 0; q < a; ++q) corrected[nonlinear[I[q]]] -= w[q];
   report.condensation_seconds += seconds_since(t);
   t = Clock::now();
   Eigen::VectorXd dx = linear_part_->solve(corrected);

@@ -33,7 +33,7 @@ struct NewtonOptions {
   // Condensed solve: when only a few dofs carry nonlinear terms (the contact boundary), factorise the
   // linear part A once per step size and solve each iteration's J = A + P^T D P through the small
   // capacitance system on those dofs (Sherman-Morrison-Woodbury): two solves with A's factors and a
-  // dense m x m solve per iteration, instead of a new factorisation. Used when the nonlinear dofs are at
+  // dense solve on the active ones per iteration, instead of a new factorisation. Used when the nonlinear dofs are at
   // most this fraction of all; 0 disables it.
   double condensed_max_fraction = 0.25;
 };
@@ -84,11 +84,12 @@ class NewtonSolver {
   const CsrMatrix* analyzed_matrix_ = nullptr;
   long analyzed_nonzeros_ = -1;
   int analyses_ = 0;
-  // Condensed solve: A's factorisation, the version of A it was made for, and S = P A^-1 P^T.
+  // Condensed solve: A's factorisation, the version of A it was made for, and the columns of
+  // S = P A^-1 P^T computed so far (each on first need: only active nonlinear dofs need one).
   std::unique_ptr<LinearSolver> linear_part_;
   std::uint64_t linear_part_version_ = 0;
   const Model* linear_part_model_ = nullptr;
-  Eigen::MatrixXd capacitance_;
+  std::vector<Eigen::VectorXd> capacitance_columns_;
   std::vector<int> position_;  // position of a global dof among the nonlinear dofs, or -1
   bool linear_part_singular_ = false;
 };

@@ -202,6 +202,11 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
   }
   StepperCallbacks callbacks;
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
+    result.assembly_seconds += r.newton.assembly_seconds;
+    result.factorize_seconds += r.newton.factorize_seconds + r.newton.analyze_seconds;
+    result.solve_seconds += r.newton.solve_seconds;
+    result.condensation_seconds += r.newton.condensation_seconds;
+    result.factorizations += r.newton.factorizations;
     if (history)
       history->row({r.time, probe(model, locator, "u", 1, scene.output.corner),
                     electric ? probe(model, locator, "phi", 0, scene.output.center) : 0.0,
