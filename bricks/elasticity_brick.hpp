@@ -4,26 +4,19 @@
 #include <memory>
 #include <string>
 
-#include "bricks/brick.hpp"
+#include "bricks/material_brick.hpp"
 #include "bricks/strain_stiffness_term.hpp"
 
 namespace pc {
 
-class ElasticityBrick : public Brick {
+class ElasticityBrick : public MaterialBrick {
  public:
   explicit ElasticityBrick(std::string region = "all", std::string datum = "B", std::string velocity = "v",
                            std::string displacement = "u");
 
-  std::string name() const override;
-  std::vector<std::string> data() const override { return {datum_}; }
-  void update(const DataView& data) override;
-  std::vector<BrickTerm> terms() const override;
-  bool linear() const override { return true; }
-  bool symmetric() const override { return true; }
-
  private:
-  std::string region_, datum_, velocity_, displacement_;
-  std::shared_ptr<const StrainStiffnessTerm> term_;
+  std::shared_ptr<const Term> make_term(const Eigen::MatrixXd& constant) const override;
+  std::string velocity_, displacement_;
 };
 
 }  // namespace pc

@@ -42,21 +42,16 @@ class MassTerm : public Term {
 }  // namespace
 
 InertiaBrick::InertiaBrick(std::string region, std::string datum, std::string velocity, std::string acceleration)
-    : region_(std::move(region)), datum_(std::move(datum)), velocity_(std::move(velocity)),
-      acceleration_(std::move(acceleration)) {}
+    : MaterialBrick("inertia", std::move(region), std::move(datum), true),
+      velocity_(std::move(velocity)), acceleration_(std::move(acceleration)) {}
 
-std::string InertiaBrick::name() const { return "inertia (" + datum_ + ") on " + region_; }
-
-void InertiaBrick::update(const DataView& data) {
-  const double rho = data.scalar(datum_);
-  require(std::isfinite(rho) && rho > 0, "datum '", datum_, "' (density) must be > 0, got ", rho,
+std::shared_ptr<const Term> InertiaBrick::make_term(const Eigen::MatrixXd& constant) const {
+  require(constant.size() == 1, "datum '", datum(), "' (density) must be a scalar, got a ", constant.rows(), " x ",
+          constant.cols(), " matrix");
+  const double rho = constant(0, 0);
+  require(std::isfinite(rho) && rho > 0, "datum '", datum(), "' (density) must be > 0, got ", rho,
           "; for a quasi-static model leave out the inertia brick");
-  term_ = std::make_shared<const MassTerm>(name(), velocity_, acceleration_, rho);
-}
-
-std::vector<BrickTerm> InertiaBrick::terms() const {
-  require(term_ != nullptr, "brick '", name(), "': terms() asked before update()");
-  return {{term_, region_}};
+  return std::make_shared<const MassTerm>(name(), velocity_, acceleration_, rho);
 }
 
 }  // namespace pc

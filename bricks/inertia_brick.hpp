@@ -4,25 +4,18 @@
 #include <memory>
 #include <string>
 
-#include "bricks/brick.hpp"
+#include "bricks/material_brick.hpp"
 
 namespace pc {
 
-class InertiaBrick : public Brick {
+class InertiaBrick : public MaterialBrick {
  public:
   explicit InertiaBrick(std::string region = "all", std::string datum = "rho", std::string velocity = "v",
                         std::string acceleration = "a");
 
-  std::string name() const override;
-  std::vector<std::string> data() const override { return {datum_}; }
-  void update(const DataView& data) override;
-  std::vector<BrickTerm> terms() const override;
-  bool linear() const override { return true; }
-  bool symmetric() const override { return true; }
-
  private:
-  std::string region_, datum_, velocity_, acceleration_;
-  std::shared_ptr<const Term> term_;
+  std::shared_ptr<const Term> make_term(const Eigen::MatrixXd& constant) const override;
+  std::string velocity_, acceleration_;
 };
 
 }  // namespace pc

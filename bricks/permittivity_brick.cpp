@@ -39,19 +39,12 @@ class PermittivityTerm : public Term {
 }  // namespace
 
 PermittivityBrick::PermittivityBrick(std::string region, std::string datum, std::string potential)
-    : region_(std::move(region)), datum_(std::move(datum)), potential_(std::move(potential)) {}
+    : MaterialBrick("permittivity", std::move(region), std::move(datum), true),
+      potential_(std::move(potential)) {}
 
-std::string PermittivityBrick::name() const { return "permittivity (" + datum_ + ") on " + region_; }
-
-void PermittivityBrick::update(const DataView& data) {
-  const Eigen::MatrixXd& beta = data.constant(datum_);
-  check_permittivity(datum_, beta, permittivity_dimension(datum_, beta));
-  term_ = std::make_shared<const PermittivityTerm>(name(), potential_, datum_, beta);
-}
-
-std::vector<BrickTerm> PermittivityBrick::terms() const {
-  require(term_ != nullptr, "brick '", name(), "': terms() asked before update()");
-  return {{term_, region_}};
+std::shared_ptr<const Term> PermittivityBrick::make_term(const Eigen::MatrixXd& beta) const {
+  check_permittivity(datum(), beta, permittivity_dimension(datum(), beta));
+  return std::make_shared<const PermittivityTerm>(name(), potential_, datum(), beta);
 }
 
 }  // namespace pc

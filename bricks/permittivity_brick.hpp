@@ -4,24 +4,17 @@
 #include <memory>
 #include <string>
 
-#include "bricks/brick.hpp"
+#include "bricks/material_brick.hpp"
 
 namespace pc {
 
-class PermittivityBrick : public Brick {
+class PermittivityBrick : public MaterialBrick {
  public:
   explicit PermittivityBrick(std::string region = "all", std::string datum = "beta", std::string potential = "phi");
 
-  std::string name() const override;
-  std::vector<std::string> data() const override { return {datum_}; }
-  void update(const DataView& data) override;
-  std::vector<BrickTerm> terms() const override;
-  bool linear() const override { return true; }
-  bool symmetric() const override { return true; }
-
  private:
-  std::string region_, datum_, potential_;
-  std::shared_ptr<const Term> term_;
+  std::shared_ptr<const Term> make_term(const Eigen::MatrixXd& constant) const override;
+  std::string potential_;
 };
 
 }  // namespace pc

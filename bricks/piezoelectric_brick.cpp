@@ -55,22 +55,12 @@ class PiezoelectricTerm : public Term {
 
 PiezoelectricCouplingBrick::PiezoelectricCouplingBrick(std::string region, std::string datum, std::string velocity,
                                                        std::string potential, std::string displacement)
-    : region_(std::move(region)), datum_(std::move(datum)), velocity_(std::move(velocity)),
-      potential_(std::move(potential)), displacement_(std::move(displacement)) {}
+    : MaterialBrick("piezoelectric coupling", std::move(region), std::move(datum), false),
+      velocity_(std::move(velocity)), potential_(std::move(potential)), displacement_(std::move(displacement)) {}
 
-std::string PiezoelectricCouplingBrick::name() const {
-  return "piezoelectric coupling (" + datum_ + ") on " + region_;
-}
-
-void PiezoelectricCouplingBrick::update(const DataView& data) {
-  const Eigen::MatrixXd& E = data.constant(datum_);
-  check_piezoelectric(datum_, E, piezoelectric_dimension(datum_, E));
-  term_ = std::make_shared<const PiezoelectricTerm>(name(), velocity_, potential_, displacement_, datum_, E);
-}
-
-std::vector<BrickTerm> PiezoelectricCouplingBrick::terms() const {
-  require(term_ != nullptr, "brick '", name(), "': terms() asked before update()");
-  return {{term_, region_}};
+std::shared_ptr<const Term> PiezoelectricCouplingBrick::make_term(const Eigen::MatrixXd& E) const {
+  check_piezoelectric(datum(), E, piezoelectric_dimension(datum(), E));
+  return std::make_shared<const PiezoelectricTerm>(name(), velocity_, potential_, displacement_, datum(), E);
 }
 
 }  // namespace pc

@@ -7,24 +7,18 @@
 #include <memory>
 #include <string>
 
-#include "bricks/brick.hpp"
+#include "bricks/material_brick.hpp"
 
 namespace pc {
 
-class PiezoelectricCouplingBrick : public Brick {
+class PiezoelectricCouplingBrick : public MaterialBrick {
  public:
   explicit PiezoelectricCouplingBrick(std::string region = "all", std::string datum = "E", std::string velocity = "v",
                                       std::string potential = "phi", std::string displacement = "u");
 
-  std::string name() const override;
-  std::vector<std::string> data() const override { return {datum_}; }
-  void update(const DataView& data) override;
-  std::vector<BrickTerm> terms() const override;
-  bool linear() const override { return true; }
-
  private:
-  std::string region_, datum_, velocity_, potential_, displacement_;
-  std::shared_ptr<const Term> term_;
+  std::shared_ptr<const Term> make_term(const Eigen::MatrixXd& constant) const override;
+  std::string velocity_, potential_, displacement_;
 };
 
 }  // namespace pc

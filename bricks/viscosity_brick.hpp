@@ -3,25 +3,18 @@
 #include <memory>
 #include <string>
 
-#include "bricks/brick.hpp"
+#include "bricks/material_brick.hpp"
 #include "bricks/strain_stiffness_term.hpp"
 
 namespace pc {
 
-class ViscosityBrick : public Brick {
+class ViscosityBrick : public MaterialBrick {
  public:
   explicit ViscosityBrick(std::string region = "all", std::string datum = "A", std::string velocity = "v");
 
-  std::string name() const override;
-  std::vector<std::string> data() const override { return {datum_}; }
-  void update(const DataView& data) override;
-  std::vector<BrickTerm> terms() const override;
-  bool linear() const override { return true; }
-  bool symmetric() const override { return true; }
-
  private:
-  std::string region_, datum_, velocity_;
-  std::shared_ptr<const StrainStiffnessTerm> term_;
+  std::shared_ptr<const Term> make_term(const Eigen::MatrixXd& constant) const override;
+  std::string velocity_;
 };
 
 }  // namespace pc
