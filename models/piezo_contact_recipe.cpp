@@ -77,7 +77,7 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
   const int dim = spec.mesh->dim();
   m.add_unknown("v", std::make_shared<const FESpace>(spec.mesh, spec.order, dim));
   if (electric) m.add_unknown("phi", std::make_shared<const FESpace>(spec.mesh, spec.order, 1));
-  built.scheme = std::make_unique<BackwardEuler>();
+  built.scheme = make_time_scheme(spec.scheme);
   built.scheme->attach(m, inertia);
 
   m.set_constant("B", spec.B);

@@ -61,13 +61,14 @@ struct PiezoContactSpec {
   FrictionLawSpec friction;
   FoundationSpec foundation;
   double slip_threshold = 0;          // |v_tau| above which a contact node counts as sliding
+  TimeSchemeSpec scheme;              // backward_euler (the paper's) | bdf2 | theta (with scheme.theta)
   // Called after the recipe's bricks and before finalize(): a user's own bricks (e.g. a new law).
   std::function<void(Model&)> extra_bricks;
 };
 
 struct PiezoContactModel {
   std::unique_ptr<Model> model;
-  std::unique_ptr<TimeScheme> scheme;
+  std::unique_ptr<TimeScheme> scheme;  // the one spec.scheme names, attached
   PiezoMaterial material;
   bool electric = false;
   // Contact pressure p_nu at a node from the normal law's argument there (velocity or displacement)

@@ -315,6 +315,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
       for (int d = 0; d < dim; ++d) out.corner[d] = corner[d], out.center[d] = center[d];
     }
     if (const Json* g = o->find("grid")) {
+      require_known_keys(*g, {"x", "y"});
       const auto x = g->at("x").as_vector(3), y = g->at("y").as_vector(3);
       require(x[2] >= 1 && y[2] >= 1 && x[2] == std::floor(x[2]) && y[2] == std::floor(y[2]), "scene: '", g->path(),
               "': the third entry of x and y is a number of points (>= 1)");
@@ -335,7 +336,9 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     require(eq != std::string::npos && eq > 0, "--set '", o, "': expected key=value, e.g. --set contact.c_nu=1e14");
-    json.set_path(o.substr(0, eq), parse_json_value_from_cli(o.substr(eq + 1)));
+    // A key the file omits may be set (e.g. time.scheme): load_scene checks every key against the ones
+    // its object knows, so a misspelt one is still refused, with the known keys listed.
+    json.set_path(o.substr(0, eq), parse_json_value_from_cli(o.substr(eq + 1)), Json::NewKeys::allow);
   }
   return load_scene(json, std::filesystem::path(path).parent_path().string());
 }

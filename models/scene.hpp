@@ -40,7 +40,7 @@ struct Scene {
   std::string name;
   std::string mesh_description;  // e.g. "60 x 20 triangle, P1"
   int nx = 0, ny = 0;            // structured meshes only
-  PiezoContactSpec spec;         // everything but the foundation
+  PiezoContactSpec spec;         // everything but the foundation; spec.scheme from time.scheme, time.theta
   std::vector<double> u0, v0;    // constant initial displacement and velocity
   std::vector<SceneFoundation> foundations;
   double end_time = 0;
