@@ -75,7 +75,8 @@ bool NewtonSolver::condensation_applies(Model& model) const {
   if (options_.condensed_max_fraction <= 0) return false;
   if (linear_part_singular_ && linear_part_model_ == &model) return false;
   const double m = double(model.nonlinear_dofs().size());
-  return m > 0 && m <= options_.condensed_max_fraction * model.layout().size();
+  // m = 0 (a linear model) also gains: the factorisation of A is kept from step to step.
+  return m <= options_.condensed_max_fraction * model.layout().size();
 }
 
 // J = A + P^T D P, with A the linear part and D the nonlinear part on the m nonlinear dofs (P selects
