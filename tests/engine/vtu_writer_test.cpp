@@ -1,5 +1,6 @@
 // The .vtu files are parsed back (base64 arrays decoded) and compared with the mesh and with the fields'
 // exact values at the nodes; the .pvd collection is read back as text.
+#include "support/error_and_temp_dir.hpp"
 #include "assembly/vtu_writer.hpp"
 
 #include <gtest/gtest.h>
@@ -167,30 +168,8 @@ void expect_point_values(const std::string& vtu, const Mesh& mesh, const std::st
   }
 }
 
-template <class Action>
-void expect_error_containing(Action action, const std::vector<std::string>& parts) {
-  try {
-    action();
-    ADD_FAILURE() << "no pc::Error thrown";
-  } catch (const Error& error) {
-    const std::string what = error.what();
-    for (const std::string& part : parts) EXPECT_NE(what.find(part), std::string::npos) << what;
-  }
-}
-
-class VtuWriterTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 message("piezocontact_vtu_", ::getpid(), "_",
-                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  fs::path directory_;
-};
+using testing::expect_error_containing;
+class VtuWriterTest : public testing::TemporaryDirectoryTest {};
 
 const auto linear = [](const double* x, double* out) { out[0] = 1 + 2 * x[0] - 3 * x[1]; };
 const auto quadratic_vector = [](const double* x, double* out) {

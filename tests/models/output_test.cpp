@@ -11,6 +11,7 @@
 #include <regex>
 #include <sstream>
 
+#include "support/error_and_temp_dir.hpp"
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "bricks/voigt.hpp"
@@ -57,30 +58,8 @@ std::vector<std::pair<double, std::string>> read_pvd(const fs::path& path) {
   return steps;
 }
 
-template <class Call>
-void expect_error_mentioning(Call call, const std::vector<std::string>& parts) {
-  try {
-    call();
-    ADD_FAILURE() << "expected pc::Error";
-  } catch (const Error& error) {
-    const std::string what = error.what();
-    for (const std::string& part : parts) EXPECT_NE(what.find(part), std::string::npos) << what;
-  }
-}
-
-class OutputTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 message("piezocontact_output_", ::getpid(), "_",
-                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  fs::path directory_;
-};
+using testing::expect_error_containing;
+class OutputTest : public testing::TemporaryDirectoryTest {};
 
 // ---- result series ------------------------------------------------------------------------------
 
@@ -131,13 +110,13 @@ TEST_F(OutputTest, ResultSeriesRewritingAStepReplacesItsTime) {
 TEST_F(OutputTest, ResultSeriesRefusesBadArgumentsNamingThePath) {
   std::ofstream(directory_ / "blocker") << "a file where a directory should go";
   const std::string impossible = (directory_ / "blocker" / "run").string();
-  expect_error_mentioning([&] { ResultSeries(impossible, "body"); }, {impossible});
+  expect_error_containing([&] { ResultSeries(impossible, "body"); }, {impossible});
 
   const Mesh mesh = rectangle_mesh({0, 0}, {1, 1}, 1, 1);
   const VtuWriter writer(mesh);
   ResultSeries series(directory_.string(), "body");
-  expect_error_mentioning([&] { series.write(-1, 0.0, writer); }, {"body.pvd", "-1"});
-  expect_error_mentioning([&] { series.write(0, std::nan(""), writer); }, {"body.pvd", "not finite"});
+  expect_error_containing([&] { series.write(-1, 0.0, writer); }, {"body.pvd", "-1"});
+  expect_error_containing([&] { series.write(0, std::nan(""), writer); }, {"body.pvd", "not finite"});
 }
 
 // ---- CSV ----------------------------------------------------------------------------------------
@@ -165,16 +144,16 @@ TEST_F(OutputTest, CsvLogWrongValueCountThrowsNamingFileAndCounts) {
   const std::string path = (directory_ / "log.csv").string();
   CsvLog log(path, {"a", "b"});
   log.row({1, 2});
-  expect_error_mentioning([&] { log.row({1, 2, 3}); }, {path, "3 values", "2 columns"});
-  expect_error_mentioning([&] { log.row({}); }, {path, "0 values", "2 columns"});
+  expect_error_containing([&] { log.row({1, 2, 3}); }, {path, "3 values", "2 columns"});
+  expect_error_containing([&] { log.row({}); }, {path, "0 values", "2 columns"});
   EXPECT_EQ(read_lines(path).size(), 2u);  // the header and the one good row
   EXPECT_EQ(log.rows_written(), 1);
 }
 
 TEST_F(OutputTest, CsvColumnNamesMustBePlain) {
   const std::string path = (directory_ / "log.csv").string();
-  expect_error_mentioning([&] { CsvLog(path, {"a", "b,c"}); }, {path, "b,c"});
-  expect_error_mentioning([&] { CsvLog(path, {}); }, {path, "no columns"});
+  expect_error_containing([&] { CsvLog(path, {"a", "b,c"}); }, {path, "b,c"});
+  expect_error_containing([&] { CsvLog(path, {}); }, {path, "no columns"});
   EXPECT_FALSE(fs::exists(path));
 }
 
@@ -188,7 +167,7 @@ TEST_F(OutputTest, WriteCsvWritesTheWholeTableAtomically) {
   EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
 
   // A bad table leaves the previous file as it was.
-  expect_error_mentioning([&] { write_csv(path.string(), {"x", "y"}, {{1, 2}, {3}}); },
+  expect_error_containing([&] { write_csv(path.string(), {"x", "y"}, {{1, 2}, {3}}); },
                           {path.string(), "1 values", "2 columns"});
   EXPECT_EQ(read_lines(path), lines);
   EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
@@ -314,11 +293,11 @@ TEST(PiezoFields, StrainIn3DFollowsTheVoigtOrder) {
 TEST(PiezoFields, WrongFieldsAndTensorsAreNamed) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2));
   const auto model = linear_model(mesh, 1, fields_2d(), true);
-  expect_error_mentioning([&] { cell_strain(*model, "phi"); }, {"'phi'", "1 components", "expected 2"});
-  expect_error_mentioning([&] { cell_electric_field(*model, "u"); }, {"'u'", "2 components"});
+  expect_error_containing([&] { cell_strain(*model, "phi"); }, {"'phi'", "1 components", "expected 2"});
+  expect_error_containing([&] { cell_electric_field(*model, "u"); }, {"'u'", "2 components"});
   PiezoMaterial m;
   m.B = isotropic_stiffness(3, 1.0, 1.0);
-  expect_error_mentioning([&] { cell_stress(*model, m); }, {"B (elasticity)", "6 x 6", "3 x 3"});
+  expect_error_containing([&] { cell_stress(*model, m); }, {"B (elasticity)", "6 x 6", "3 x 3"});
 }
 
 TEST(VonMises, UniaxialStressIsItsMagnitudeAndShearScalesBySqrt3) {
@@ -344,7 +323,7 @@ TEST(VonMises, PlaneFormulaIsTheDocumentedInPlaneOne) {
   EXPECT_DOUBLE_EQ(von_mises(s, 2), std::sqrt(1.5 * 1.5 + 1.5 * 0.5 + 0.25 + 3 * 0.0625));
   // Equal to the 3D formula with szz = 0.
   EXPECT_DOUBLE_EQ(von_mises(s, 2), von_mises(std::vector<double>{1.5, -0.5, 0, 0, 0, 0.25}, 3));
-  expect_error_mentioning([&] { von_mises(s, 3); }, {"6 values", "got 3"});
+  expect_error_containing([&] { von_mises(s, 3); }, {"6 values", "got 3"});
 }
 
 TEST_F(OutputTest, AddPiezoOutputWritesThePresentFields) {
@@ -414,8 +393,8 @@ TEST(BoundaryNodes, TiesAreOrderedByTheOtherCoordinates) {
     EXPECT_EQ(nodes.points[k][0], expected[k][0]) << k;
     EXPECT_EQ(nodes.points[k][1], expected[k][1]) << k;
   }
-  expect_error_mentioning([&] { boundary_nodes(space, "all", 0); }, {"'all'", "face region"});
-  expect_error_mentioning([&] { boundary_nodes(space, "bottom", 2); }, {"axis 2", "2D"});
+  expect_error_containing([&] { boundary_nodes(space, "all", 0); }, {"'all'", "face region"});
+  expect_error_containing([&] { boundary_nodes(space, "bottom", 2); }, {"axis 2", "2D"});
 }
 
 }  // namespace
