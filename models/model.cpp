@@ -451,13 +451,16 @@ void Model::assemble(bool tangent) {
   }
   // The largest single brick contribution on the free dofs: the residual is a sum of such terms, so
   // round-off leaves it at about machine epsilon times this scale, whatever the first residual was.
-  auto measure_and_add = [&](const std::string& u) {
-    Eigen::VectorXd& r = brick_residual.at(u);
+  auto measure = [&](const std::string& u, const Eigen::VectorXd& r) {
     const auto global = s.layout.global_indices(s.layout.field_index(u));
     double sum = 0;
     for (int d = 0; d < int(r.size()); ++d)
       if (global[d] >= 0) sum += r[d] * r[d];
     residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(sum));
+  };
+  auto measure_and_add = [&](const std::string& u) {
+    Eigen::VectorXd& r = brick_residual.at(u);
+    measure(u, r);
     field_residuals_.at(u) += r;
     r.setZero();
   };
@@ -520,14 +523,19 @@ void Model::assemble(bool tangent) {
       state.r0_valid = true;
       state.r0_time = time_;
     }
+    // The pieces K_k x_k and R0 are measured one by one: they may cancel within the brick (k_e phi
+    // against k_e phi_f), and round-off is relative to each of them.
     for (const auto& [u, r0] : state.r0) {
+      measure(u, r0);
       brick_residual.at(u) += r0;
       touched.insert(u);
     }
     for (const BoundTerm& bt : state.terms)
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
         const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
-        brick_residual.at(u) += bt.assembly->block(int(k)) * this->values(bt.trial_fields[k]);
+        const Eigen::VectorXd piece = bt.assembly->block(int(k)) * this->values(bt.trial_fields[k]);
+        measure(u, piece);
+        brick_residual.at(u) += piece;
         touched.insert(u);
       }
     for (const std::string& u : touched) measure_and_add(u);
