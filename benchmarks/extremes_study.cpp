@@ -2,9 +2,10 @@
 // P1 and P2: every case of tests/support/extreme_cases.hpp (the test runs the same cases on a coarse
 // mesh), one row each: outcome, Newton iterations, wall time, key numbers of the run, and the penetration
 // max(-u_y) over the contact nodes. A study, not a Google Benchmark. Run:
-//   build/release/benchmarks/extremes_study [extremes.csv] [key=value ...]
+//   build/release/benchmarks/extremes_study [extremes.csv] [key=value ...] [case ...]
 // The table goes to stdout and, row by row as the cases finish, to the CSV file; extra key=value
-// arguments are applied to every case before its own (e.g. mesh.nx=12 mesh.ny=4 time.steps=10).
+// arguments are applied to every case before its own (e.g. mesh.nx=12 mesh.ny=4 time.steps=10); case
+// names, if any, select the cases to run.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -49,7 +50,8 @@ double penetration(const fs::path& gamma_c) {
 
 int main(int argc, char** argv) {
   const std::string csv_path = argc > 1 ? argv[1] : "extremes.csv";
-  std::vector<std::string> extra(argv + std::min(argc, 2), argv + argc);
+  std::vector<std::string> extra, only;
+  for (int i = 2; i < argc; ++i) (std::string(argv[i]).find('=') == std::string::npos ? only : extra).push_back(argv[i]);
   const std::string scene_path = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
   const fs::path scratch = fs::temp_directory_path() / ("extremes_study_" + std::to_string(getpid()));
 
@@ -70,6 +72,7 @@ int main(int argc, char** argv) {
       double pen = NAN;
       if (order == 2 && std::find(c.overrides.begin(), c.overrides.end(), "mesh.order=2") != c.overrides.end())
         continue;  // a P2 case: run in the first pass already
+      if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
       int scene_order = order;
       try {
         const pc::Scene scene = pc::load_scene_file(scene_path, overrides);
