@@ -229,14 +229,8 @@ NewtonReport NewtonSolver::solve(Model& model) {
     }
     if (!dx.allFinite()) return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": the Newton step is not finite"));
 
-    // Backtracking on the scaled residual: accept alpha when the merit drops by the Armijo fraction. A
-    // full step at round-off of the iterate (increment tolerance) is taken as is: the merit change it
-    // makes is noise, e.g. where a penalty (k_e = 1e15) sets the residual's floor above the tolerance.
+    // Backtracking on the scaled residual: accept alpha when the merit drops by the Armijo fraction.
     const double merit_before = merit(norms, reference);
-    const std::vector<double> full_steps = block_norms(layout, dx), sizes_before = block_norms(layout, model.free_values());
-    bool round_off_step = true;
-    for (int b = 0; b < n_blocks; ++b)
-      round_off_step = round_off_step && full_steps[b] <= options_.increment_tolerance * std::max(sizes_before[b], 1e-300);
     double alpha = 1, applied = 0;
     int backtracks = 0;
     std::vector<double> new_norms;
@@ -246,7 +240,7 @@ NewtonReport NewtonSolver::solve(Model& model) {
       assemble();
       new_norms = block_norms(layout, model.residual());
       const double m = merit(new_norms, reference);
-      const bool accept = !options_.line_search || round_off_step ||
+      const bool accept = !options_.line_search ||
                           (std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before);
       if (accept || backtracks >= options_.max_backtracks) break;
       alpha *= options_.backtrack_factor;
