@@ -24,6 +24,12 @@ std::vector<double> block_norms(const DofLayout& layout, const Eigen::VectorXd& 
   return norms;
 }
 
+std::map<std::string, Eigen::VectorXd> unknown_values(const Model& model) {
+  std::map<std::string, Eigen::VectorXd> values;
+  for (const std::string& u : model.unknowns()) values[u] = model.values(u);
+  return values;
+}
+
 double merit(const std::vector<double>& norms, const std::vector<double>& reference) {
   double m = 0;
   for (size_t b = 0; b < norms.size(); ++b) m += (norms[b] / reference[b]) * (norms[b] / reference[b]);
@@ -46,6 +52,7 @@ NewtonSolver::NewtonSolver(NewtonOptions options) : options_(std::move(options))
   require(options_.max_iterations >= 1, "Newton: max_iterations must be >= 1, got ", options_.max_iterations);
   require(options_.relative_tolerance >= 0 && options_.absolute_tolerance >= 0 && options_.increment_tolerance >= 0,
           "Newton: tolerances must be >= 0");
+  require(options_.watchdog >= 0, "Newton: watchdog must be >= 0, got ", options_.watchdog);
   require(options_.backtrack_factor > 0 && options_.backtrack_factor < 1, "Newton: backtrack_factor must be in (0, 1), got ",
           options_.backtrack_factor);
   linear_ = make_linear_solver(options_.linear_solver);
@@ -218,9 +225,24 @@ NewtonReport NewtonSolver::solve(Model& model) {
   if (!model.residual().allFinite()) return finish(NewtonOutcome::Diverged, "the initial residual is not finite");
   if (residual_converged(norms) || layout.size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
   const double merit0 = merit(norms, reference);
+  const double divergence_bound = options_.divergence_factor * std::max(merit0, 1.0);
+
+  // Watchdog: the best iterate so far, and the full steps taken since it was last improved on.
+  const bool watchdog = options_.line_search && options_.watchdog > 0;
+  std::map<std::string, Eigen::VectorXd> best = unknown_values(model);
+  double best_merit = merit0;
+  int since_best = 0;
 
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
     report.iterations = iteration;
+    bool restarted = false;
+    if (watchdog && since_best >= options_.watchdog) {
+      for (const auto& [name, values] : best) model.set_values(name, values);
+      assemble();
+      norms = block_norms(layout, model.residual());
+      since_best = 0;
+      restarted = true;
+    }
     Eigen::VectorXd dx;
     try {
       dx = condensation_applies(model) ? condensed_step(model, report) : full_step(model, report);
@@ -229,7 +251,9 @@ NewtonReport NewtonSolver::solve(Model& model) {
     }
     if (!dx.allFinite()) return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": the Newton step is not finite"));
 
-    // Backtracking on the scaled residual: accept alpha when the merit drops by the Armijo fraction.
+    // Armijo backtracking on the scaled residual (classical mode, or after a watchdog restart); otherwise
+    // the full step, unless it leaves the finite, non-divergent range.
+    const bool armijo = options_.line_search && (!watchdog || restarted);
     const double merit_before = merit(norms, reference);
     double alpha = 1, applied = 0;
     int backtracks = 0;
@@ -241,14 +265,15 @@ NewtonReport NewtonSolver::solve(Model& model) {
       new_norms = block_norms(layout, model.residual());
       const double m = merit(new_norms, reference);
       const bool accept = !options_.line_search ||
-                          (std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before);
+                          (armijo ? std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before
+                                  : std::isfinite(m) && m <= divergence_bound);
       if (accept || backtracks >= options_.max_backtracks) break;
       alpha *= options_.backtrack_factor;
       ++backtracks;
     }
     norms = new_norms;
     const std::vector<double> steps = block_norms(layout, alpha * dx);
-    report.history.push_back({norms, steps, alpha, backtracks});
+    report.history.push_back({norms, steps, alpha, backtracks, restarted});
 
     if (!model.residual().allFinite())
       return finish(NewtonOutcome::Diverged, message("iteration ", iteration, ": the residual is not finite"));
@@ -258,9 +283,17 @@ NewtonReport NewtonSolver::solve(Model& model) {
     for (int b = 0; b < n_blocks; ++b)
       small_step = small_step && steps[b] <= options_.increment_tolerance * std::max(sizes[b], 1e-300);
     if (small_step) return finish(NewtonOutcome::Converged, "increment tolerance met");
-    if (merit(norms, reference) > options_.divergence_factor * merit0)
+    const double m = merit(norms, reference);
+    if (m > divergence_bound)
       return finish(NewtonOutcome::Diverged, message("iteration ", iteration, ": the scaled residual grew by more than ",
                                                      options_.divergence_factor));
+    if (m <= (1 - 2 * options_.armijo) * best_merit) {
+      best_merit = m;
+      if (watchdog) best = unknown_values(model);
+      since_best = 0;
+    } else {
+      ++since_best;
+    }
   }
   return finish(NewtonOutcome::MaxIterations, message("no convergence in ", options_.max_iterations, " iterations"));
 }

@@ -23,11 +23,19 @@ struct NewtonOptions {
   std::map<std::string, double> absolute_tolerances;  // per unknown, overriding absolute_tolerance
   // ... or when a full step changed every block by at most this much relative to the block's size.
   double increment_tolerance = 1e-12;
+  // Globalisation. With line_search, a step is taken in full as long as the scaled residual stays finite
+  // and below the divergence bound (a watchdog, Chamberlain et al. 1982): a node crossing the kink of a
+  // contact law makes the residual jump even when the step is right, so Armijo backtracking at every
+  // iteration would stall there. When `watchdog` full steps in a row have not improved on the best
+  // iterate so far (by the Armijo fraction), Newton returns to that iterate and backtracks from it.
+  // watchdog = 0 gives classical Armijo backtracking at every iteration.
   bool line_search = true;
+  int watchdog = 8;
   int max_backtracks = 12;
   double backtrack_factor = 0.5;
   double armijo = 1e-4;
-  // The scaled residual growing by this factor over the first one means divergence.
+  // The scaled residual growing by this factor over the first one (or over 1, the size of the block's
+  // reference, if the first was smaller) means divergence.
   double divergence_factor = 1e12;
   std::string linear_solver = "umfpack";
   // Condensed solve: when only a few dofs carry nonlinear terms (the contact boundary), factorise the
@@ -46,6 +54,7 @@ struct NewtonIteration {
   std::vector<double> increment_norms;  // per block, of the accepted step
   double step_length = 0;
   int backtracks = 0;
+  bool restarted = false;  // the watchdog returned to the best iterate before this step
 };
 
 struct NewtonReport {

@@ -284,8 +284,8 @@ Scene load_scene(const Json& json, const std::string& directory) {
   problems.check_void([&] {
     const Json* s = json.find("solver");
     if (!s) return;
-    require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "cutback_factor",
-                            "condensed"});
+    require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog",
+                            "cutback_factor", "condensed"});
     if (const Json* x = s->find("condensed"))
       scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
     if (const Json* x = s->find("linear")) {
@@ -295,6 +295,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
     if (const Json* x = s->find("max_iterations")) scene.newton.max_iterations = x->as_int_at_least(1);
     if (const Json* x = s->find("relative_tolerance")) scene.newton.relative_tolerance = x->as_number_in(0, 1);
     if (const Json* x = s->find("line_search")) scene.newton.line_search = x->as_bool();
+    if (const Json* x = s->find("watchdog")) scene.newton.watchdog = x->as_int_at_least(0);
     if (const Json* x = s->find("cutback_factor")) {
       scene.cutback_factor = x->as_number_in(0, 1);
       require(scene.cutback_factor > 0 && scene.cutback_factor < 1, "scene: 'solver.cutback_factor' must be in (0, 1)");
@@ -341,6 +342,15 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
     json.set_path(o.substr(0, eq), parse_json_value_from_cli(o.substr(eq + 1)), Json::NewKeys::allow);
   }
   return load_scene(json, std::filesystem::path(path).parent_path().string());
+}
+
+const SceneFoundation& find_foundation(const Scene& scene, const std::string& name) {
+  std::string known;
+  for (const SceneFoundation& f : scene.foundations) {
+    if (f.name == name) return f;
+    known += (known.empty() ? "" : ", ") + f.name;
+  }
+  fail("scene '", scene.name, "' has no foundation '", name, "' (it has: ", known, ")");
 }
 
 }  // namespace pc
