@@ -77,11 +77,8 @@ int main(int argc, char** argv) {
       try {
         const pc::Scene scene = pc::load_scene_file(scene_path, overrides);
         scene_order = scene.spec.order;
-        const pc::SceneFoundation* f = nullptr;
-        for (const auto& candidate : scene.foundations)
-          if (candidate.name == c.foundation) f = &candidate;
         const fs::path dir = scratch / (c.name + "_p" + std::to_string(order));
-        r = pc::run_foundation(scene, *f, dir.string(), false);
+        r = pc::run_foundation(scene, pc::find_foundation(scene, c.foundation), dir.string(), false);
         pen = penetration(dir / "gamma_c.csv");
         const bool finite = std::isfinite(r.max_abs_ux) && std::isfinite(r.max_abs_uy) && std::isfinite(r.phi_min) &&
                             std::isfinite(r.phi_max) && std::isfinite(r.ux_corner) && std::isfinite(r.uy_corner) &&

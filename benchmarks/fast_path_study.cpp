@@ -28,10 +28,7 @@ int main(int argc, char** argv) {
                                            "time.steps=" + std::to_string(steps),
                                            "time.T=" + std::to_string(0.2 * steps / 200.0),
                                            std::string("solver.condensed=") + (condensed ? "true" : "false")});
-      const SceneFoundation* conductive = nullptr;
-      for (const auto& f : scene.foundations)
-        if (f.name == "conductive") conductive = &f;
-      const FoundationRunResult r = run_foundation(scene, *conductive, "", false);
+      const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
       if (!condensed) plain_wall = r.wall_seconds;
       std::printf("| %d x %d | %d | %s | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %s |\n", nx, nx / 3, r.ndof,
                   condensed ? "condensed" : "plain", r.newton_iterations_total, r.factorizations, r.wall_seconds,

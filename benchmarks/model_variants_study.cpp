@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "models/scene.hpp"
+#include "support/child_process.hpp"
 
 namespace {
 
@@ -28,20 +29,11 @@ using Clock = std::chrono::steady_clock;
 const char* kVariants[] = {"a_mechanical", "b_insulated", "c_conductive", "d_quasistatic"};
 const std::string kScene = (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes/paper2d.json").string();
 
-// Peak resident set size of this process so far, in KiB (VmHWM of /proc/self/status).
-long vm_hwm_kib() {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
-  return -1;
-}
-
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 PiezoContactSpec variant_spec(const Scene& scene, const std::string& variant) {
   PiezoContactSpec spec = scene.spec;
-  for (const SceneFoundation& f : scene.foundations)
-    if (f.name == (variant == "c_conductive" ? "conductive" : "insulated")) spec.foundation = f.spec;
+  spec.foundation = find_foundation(scene, variant == "c_conductive" ? "conductive" : "insulated").spec;
   if (variant == "a_mechanical") {
     spec.E.resize(0, 0);
     spec.beta.resize(0, 0);
@@ -53,7 +45,7 @@ PiezoContactSpec variant_spec(const Scene& scene, const std::string& variant) {
 // One variant on one mesh; prints its numbers on one line for the parent.
 int run_child(const std::string& variant, int nx, int ny, int steps) {
   const Scene scene = load_scene_file(kScene, {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny)});
-  const long hwm_before = vm_hwm_kib();
+  const long hwm_before = study::peak_rss_kib();
   const auto start = Clock::now();
   PiezoContactModel built = build_piezo_contact_model(variant_spec(scene, variant));
   Model& m = *built.model;
@@ -87,7 +79,7 @@ int run_child(const std::string& variant, int nx, int ny, int steps) {
   const double run_seconds = seconds_since(run_start);
   std::printf("%d %d %zu %d %d %d %d %.6f %.6f %.6f %.6f %.6f %.6f %ld %ld\n", run.completed ? 1 : 0, dofs,
               m.bricks().size(), m.layout().size(), run.steps, run.newton_iterations_total, run.cutbacks,
-              build_seconds, run_seconds, assembly, factorize, solve, condensation, hwm_before, vm_hwm_kib());
+              build_seconds, run_seconds, assembly, factorize, solve, condensation, hwm_before, study::peak_rss_kib());
   return run.completed ? 0 : 1;
 }
 
@@ -106,7 +98,6 @@ int main(int argc, char** argv) {
   std::stringstream list(argc > 3 ? argv[3] : "60x20,120x40");
   for (std::string item; std::getline(list, item, ',');)
     meshes.emplace_back(std::stoi(item), std::stoi(item.substr(item.find('x') + 1)));
-  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
 
   std::ofstream csv(csv_path);
   csv << "variant,mesh,completed,dofs,bricks,free_dofs,steps,newton_iterations,cutbacks,build_s,run_s,assembly_s,"
@@ -118,25 +109,20 @@ int main(int argc, char** argv) {
   for (const auto& [nx, ny] : meshes) {
     const std::string mesh = std::to_string(nx) + "x" + std::to_string(ny);
     for (const char* variant : kVariants) {
-      const std::string command = "'" + self + "' --child " + variant + " " + std::to_string(nx) + " " +
-                                  std::to_string(ny) + " " + std::to_string(steps);
-      FILE* child = popen(command.c_str(), "r");
-      char buffer[512] = {};
-      const bool read = child && std::fgets(buffer, sizeof buffer, child);
-      const int status = child ? pclose(child) : -1;
+      const study::ChildOutput child = study::run_child(
+          {"--child", variant, std::to_string(nx), std::to_string(ny), std::to_string(steps)});
       int completed = 0, dofs = 0, bricks = 0, free_dofs = 0, done = 0, iterations = 0, cutbacks = 0;
       double build = 0, run = 0, assembly = 0, factorize = 0, solve = 0, condensation = 0;
       long hwm_before = 0, hwm = 0;
-      if (!read || std::sscanf(buffer, "%d %d %d %d %d %d %d %lf %lf %lf %lf %lf %lf %ld %ld", &completed, &dofs,
+      if (!child.ran || std::sscanf(child.line.c_str(), "%d %d %d %d %d %d %d %lf %lf %lf %lf %lf %lf %ld %ld", &completed, &dofs,
                                &bricks, &free_dofs, &done, &iterations, &cutbacks, &build, &run, &assembly, &factorize,
                                &solve, &condensation, &hwm_before, &hwm) != 15) {
-        std::fprintf(stderr, "%s on %s: the child failed (status %d)\n", variant, mesh.c_str(), status);
+        std::fprintf(stderr, "%s on %s: the child failed (status %d)\n", variant, mesh.c_str(), child.status);
         ++failures;
         continue;
       }
-      failures += status != 0;
-      std::string line = buffer;
-      line.pop_back();  // the newline
+      failures += child.status != 0;
+      std::string line = child.line;
       for (char& c : line) c = c == ' ' ? ',' : c;
       csv << variant << "," << mesh << "," << line << "\n";
       std::printf("| %s%s | %s | %d | %d | %d | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.1f | %.1f |\n", variant,

@@ -56,5 +56,7 @@ struct Scene {
 Scene load_scene(const Json& json, const std::string& directory);
 // Reads the file, applies overrides "a.b=value" (the value parsed as JSON when it parses), loads.
 Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides = {});
+// The scene's foundation of that name; throws naming the known ones.
+const SceneFoundation& find_foundation(const Scene& scene, const std::string& name);
 
 }  // namespace pc

@@ -99,9 +99,10 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
       for (int i = 0; i < g.nx; ++i) {
         const std::array<double, 3> x = {g.nx > 1 ? g.x0 + (g.x1 - g.x0) * i / (g.nx - 1) : g.x0,
                                          g.ny > 1 ? g.y0 + (g.y1 - g.y0) * j / (g.ny - 1) : g.y0, 0.0};
-        rows.push_back({x[0], x[1], at("u", 0, x), at("u", 1, x), electric ? at("phi", 0, x) : 0.0});
+        rows.push_back({x[0], x[1], at("u", 0, x), at("u", 1, x), at("v", 0, x), at("v", 1, x),
+                        electric ? at("phi", 0, x) : 0.0});
       }
-    write_csv(dir + "/grid.csv", {"x", "y", "ux", "uy", "phi"}, rows);
+    write_csv(dir + "/grid.csv", {"x", "y", "ux", "uy", "vx", "vy", "phi"}, rows);
   }
 
   // The final state on the mesh, for the figures (2D).

@@ -20,16 +20,11 @@ Scene coarse(std::vector<std::string> overrides = {}) {
   return load_scene_file(kScene, overrides);
 }
 
-const SceneFoundation& foundation(const Scene& scene, const std::string& name) {
-  for (const auto& f : scene.foundations)
-    if (f.name == name) return f;
-  throw Error("no foundation " + name);
-}
 
 TEST(PaperScene, CoarseRunsConvergeInFewNewtonIterationsAndKeepTheBoundaryConditions) {
   const Scene scene = coarse();
   for (const std::string name : {"insulated", "conductive"}) {
-    const FoundationRunResult r = run_foundation(scene, foundation(scene, name), "", false);
+    const FoundationRunResult r = run_foundation(scene, find_foundation(scene, name), "", false);
     ASSERT_TRUE(r.completed) << name << ": " << r.message;
     EXPECT_EQ(r.steps, 20);
     EXPECT_LE(r.newton_iterations_max_per_step, 10) << name;
@@ -44,7 +39,7 @@ TEST(PaperScene, ContactPotentialTendsToTheFoundationVoltageAsConductanceGrows) 
   double previous_gap = 1e300;
   for (double k_e : {1e-8, 1e-6, 1e-3, 1.0}) {
     const Scene scene = coarse({"foundation.conductive.k_e=" + std::to_string(k_e), "time.steps=4"});
-    const FoundationRunResult r = run_foundation(scene, foundation(scene, "conductive"), "", false);
+    const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
     ASSERT_TRUE(r.completed) << r.message;
     const double gap = std::abs(r.phi_min - (-48.0));
     std::printf("k_e = %g: phi_min = %.6g V (|phi_min - phi_f| = %.3g)\n", k_e, r.phi_min, gap);
@@ -56,8 +51,8 @@ TEST(PaperScene, ContactPotentialTendsToTheFoundationVoltageAsConductanceGrows) 
 
 TEST(PaperScene, VanishingConductanceReproducesTheInsulatedFoundation) {
   const Scene scene = coarse({"foundation.conductive.k_e=0", "time.steps=10"});
-  const FoundationRunResult conductive = run_foundation(scene, foundation(scene, "conductive"), "", false);
-  const FoundationRunResult insulated = run_foundation(scene, foundation(scene, "insulated"), "", false);
+  const FoundationRunResult conductive = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
+  const FoundationRunResult insulated = run_foundation(scene, find_foundation(scene, "insulated"), "", false);
   ASSERT_TRUE(conductive.completed && insulated.completed);
   EXPECT_NEAR(conductive.uy_corner, insulated.uy_corner, 1e-9 * std::abs(insulated.uy_corner));
   EXPECT_NEAR(conductive.phi_center, insulated.phi_center, 1e-9 * std::abs(insulated.phi_center));
@@ -69,7 +64,7 @@ TEST(PaperScene, VanishingConductanceReproducesTheInsulatedFoundation) {
 TEST(PaperScene, ResultsConvergeUnderMeshAndTimeStepRefinement) {
   auto corner = [](const std::vector<std::string>& o) {
     const Scene scene = load_scene_file(kScene, o);
-    const FoundationRunResult r = run_foundation(scene, foundation(scene, "conductive"), "", false);
+    const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
     EXPECT_TRUE(r.completed) << r.message;
     return r.ux_corner;
   };
@@ -99,8 +94,8 @@ TEST(PaperScene, CondensedAndFullNewtonSolvesAgree) {
   for (const std::string name : {"insulated", "conductive"}) {
     const Scene condensed = coarse({"solver.condensed=true"});
     const Scene full = coarse({"solver.condensed=false"});
-    const FoundationRunResult a = run_foundation(condensed, foundation(condensed, name), "", false);
-    const FoundationRunResult b = run_foundation(full, foundation(full, name), "", false);
+    const FoundationRunResult a = run_foundation(condensed, find_foundation(condensed, name), "", false);
+    const FoundationRunResult b = run_foundation(full, find_foundation(full, name), "", false);
     ASSERT_TRUE(a.completed && b.completed) << a.message << b.message;
     EXPECT_EQ(a.newton_iterations_total, b.newton_iterations_total) << name;
     EXPECT_NEAR(a.ux_corner, b.ux_corner, 1e-8 * std::abs(b.ux_corner)) << name;
