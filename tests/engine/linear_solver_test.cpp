@@ -12,57 +12,12 @@
 
 #include "assembly/error.hpp"
 #include "assembly/sparse.hpp"
+#include "support/test_matrices.hpp"
 
 namespace pc {
 namespace {
 
-using Triplets = std::vector<Eigen::Triplet<double, int>>;
-
-CsrMatrix from_triplets(int rows, int cols, const Triplets& triplets) {
-  CsrMatrix matrix(rows, cols);
-  matrix.setFromTriplets(triplets.begin(), triplets.end());
-  matrix.makeCompressed();
-  return matrix;
-}
-
-// 5-point stencil on an m x m grid with the neighbours outside the grid eliminated (Dirichlet), plus
-// `convection` times a central first difference in x, which makes it nonsymmetric.
-Triplets stencil_2d(int m, double convection, int offset = 0) {
-  Triplets triplets;
-  const auto node = [m, offset](int i, int j) { return offset + i * m + j; };
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) {
-      triplets.emplace_back(node(i, j), node(i, j), 4.0);
-      if (j > 0) triplets.emplace_back(node(i, j), node(i, j - 1), -1.0 - convection);
-      if (j + 1 < m) triplets.emplace_back(node(i, j), node(i, j + 1), -1.0 + convection);
-      if (i > 0) triplets.emplace_back(node(i, j), node(i - 1, j), -1.0);
-      if (i + 1 < m) triplets.emplace_back(node(i, j), node(i + 1, j), -1.0);
-    }
-  return triplets;
-}
-
-CsrMatrix laplacian_2d(int m) { return from_triplets(m * m, m * m, stencil_2d(m, 0.0)); }
-
-CsrMatrix convection_diffusion_2d(int m) { return from_triplets(m * m, m * m, stencil_2d(m, 0.4)); }
-
-// [[K, B^T], [B, 0]]: K the Laplacian, each multiplier fixing the mean of one grid row. Symmetric,
-// indefinite, with a zero diagonal block that needs pivoting.
-CsrMatrix saddle_point(int m) {
-  Triplets triplets = stencil_2d(m, 0.0);
-  const int multipliers = m * m;
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) {
-      triplets.emplace_back(multipliers + i, i * m + j, 1.0);
-      triplets.emplace_back(i * m + j, multipliers + i, 1.0);
-    }
-  return from_triplets(m * m + m, m * m + m, triplets);
-}
-
-Eigen::VectorXd rhs_for(const CsrMatrix& matrix) {
-  Eigen::VectorXd x(matrix.rows());
-  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<double>(i)) + 0.5;
-  return matrix * x;
-}
+using namespace testing::matrices;
 
 double relative_residual(const CsrMatrix& matrix, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
   return (matrix * x - b).norm() / b.norm();
@@ -84,13 +39,13 @@ bool contains(const std::string& text, const std::string& part) {
 
 std::vector<std::string> lu_solvers() { return {"eigen-lu", "umfpack", "mumps"}; }
 
-class EverySolver : public testing::TestWithParam<std::string> {
+class EverySolver : public ::testing::TestWithParam<std::string> {
  protected:
   std::unique_ptr<LinearSolver> solver = make_linear_solver(GetParam());
 };
 
-INSTANTIATE_TEST_SUITE_P(Solvers, EverySolver, testing::ValuesIn(linear_solver_names()),
-                         [](const testing::TestParamInfo<std::string>& info) {
+INSTANTIATE_TEST_SUITE_P(Solvers, EverySolver, ::testing::ValuesIn(linear_solver_names()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = info.param;
                            for (char& c : name)
                              if (c == '-') c = '_';

@@ -1,0 +1,47 @@
+#pragma once
+// Static condensation of a sparse matrix onto a few of its unknowns (the interface c; the others are the
+// interior i), by MUMPS: the factorisation eliminates the interior and returns the dense Schur complement
+//   S = A_cc - A_ci A_ii^-1 A_ic,
+// and a solve of A x = b splits into
+//   reduce:  r = b_c - A_ci A_ii^-1 b_i        (a forward substitution)
+//   a dense solve of the small interface system, which the caller may modify (e.g. S + D for a contact
+//   tangent D on c): S' x_c = r
+//   expand:  x_i = A_ii^-1 (b_i - A_ic x_c)    (a backward substitution).
+// Only the interior block must be nonsingular: A itself may be singular (a body held by its contact only),
+// the modified S' then is not.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/mumps_handle.hpp"
+#include "assembly/sparse.hpp"
+
+namespace pc {
+
+class SchurComplement {
+ public:
+  // Symbolic phase for the pattern of `a` with these interface unknowns (0-based, distinct, any order:
+  // the Schur complement's rows and columns follow it).
+  void analyze(const CsrMatrix& a, const std::vector<int>& interface);
+  bool is_analyzed_for(const CsrMatrix& a, const std::vector<int>& interface) const;
+  // Numeric phase: factorises A_ii and computes S. The pattern must be the analysed one.
+  void factorize(const CsrMatrix& a);
+
+  const std::vector<int>& interface() const { return interface_; }
+  const Eigen::MatrixXd& schur() const { return schur_; }
+  Eigen::VectorXd reduce(const Eigen::VectorXd& b);
+  // The whole solution: x_interface at the interface, the interior from the backward substitution.
+  Eigen::VectorXd expand(const Eigen::VectorXd& b, const Eigen::VectorXd& x_interface);
+
+ private:
+  void solve_phase(Eigen::VectorXd& rhs, Eigen::VectorXd& reduced, int phase);
+
+  MumpsHandle mumps_{"Schur complement (MUMPS)"};
+  CsrMatrix matrix_;  // own copy: MUMPS reads its arrays
+  std::vector<int> interface_;
+  std::vector<MUMPS_INT> listvar_;
+  Eigen::MatrixXd schur_;
+  bool analyzed_ = false, factorized_ = false;
+};
+
+}  // namespace pc

@@ -1,0 +1,116 @@
+// Static condensation by MUMPS (assembly/schur_complement.hpp) against dense linear algebra: the Schur
+// complement S = A_cc - A_ci A_ii^-1 A_ic of a nonsymmetric matrix, reduce + interface solve + expand
+// giving A^-1 b, a modified interface system (S + D) giving the solution of A + P^T D P, and a matrix
+// that is singular while its interior block is not.
+#include "assembly/schur_complement.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "assembly/error.hpp"
+#include "support/test_matrices.hpp"
+
+namespace pc {
+namespace {
+
+using namespace testing::matrices;
+
+struct Split {
+  std::vector<int> interface, interior;
+};
+
+// Every 7th unknown, out of order, as the interface.
+Split split(int n) {
+  Split s;
+  for (int i = n - 1; i >= 0; --i) (i % 7 == 3 ? s.interface : s.interior).push_back(i);
+  return s;
+}
+
+Eigen::MatrixXd block(const Eigen::MatrixXd& a, const std::vector<int>& rows, const std::vector<int>& cols) {
+  Eigen::MatrixXd b(rows.size(), cols.size());
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < cols.size(); ++j) b(i, j) = a(rows[i], cols[j]);
+  return b;
+}
+
+TEST(SchurComplement, MatchesTheDenseSchurComplementOfANonsymmetricMatrix) {
+  const CsrMatrix a = convection_diffusion_2d(9);
+  const Eigen::MatrixXd dense(a);
+  const Split s = split(int(a.rows()));
+  SchurComplement schur;
+  schur.analyze(a, s.interface);
+  schur.factorize(a);
+  const Eigen::MatrixXd expected =
+      block(dense, s.interface, s.interface) -
+      block(dense, s.interface, s.interior) * block(dense, s.interior, s.interior).lu().solve(block(dense, s.interior, s.interface));
+  EXPECT_LT((schur.schur() - expected).norm(), 1e-12 * expected.norm());
+  EXPECT_GT((expected - expected.transpose()).norm(), 0.1 * expected.norm()) << "the test needs a nonsymmetric S";
+}
+
+TEST(SchurComplement, ReduceSolveExpandSolvesTheWholeSystemAndItsContactModification) {
+  const CsrMatrix a = saddle_point(8);  // indefinite, with a zero diagonal block
+  const Split s = split(int(a.rows()));
+  SchurComplement schur;
+  schur.analyze(a, s.interface);
+  schur.factorize(a);
+  const Eigen::VectorXd b = rhs_for(a);
+  const Eigen::VectorXd x = schur.expand(b, schur.schur().lu().solve(schur.reduce(b)));
+  EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm());
+
+  // A + P^T D P with a dense D on the interface: the interface system becomes S + D, nothing else changes.
+  const int m = int(s.interface.size());
+  const Eigen::MatrixXd d = Eigen::MatrixXd::Random(m, m) * 3.0;
+  Eigen::MatrixXd modified(a);
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) modified(s.interface[i], s.interface[j]) += d(i, j);
+  const Eigen::VectorXd y = schur.expand(b, (schur.schur() + d).lu().solve(schur.reduce(b)));
+  EXPECT_LT((modified * y - b).norm(), 1e-11 * b.norm());
+}
+
+TEST(SchurComplement, SingularMatrixWithARegularInteriorCondenses) {
+  // A pure-Neumann-like matrix: the 1D Laplacian with both ends free is singular (constants), but with
+  // one unknown on the interface the interior is regular; S is then zero, and S + D is regular.
+  Triplets t;
+  const int n = 12;
+  for (int i = 0; i + 1 < n; ++i) {
+    t.emplace_back(i, i, 1.0);
+    t.emplace_back(i + 1, i + 1, 1.0);
+    t.emplace_back(i, i + 1, -1.0);
+    t.emplace_back(i + 1, i, -1.0);
+  }
+  const CsrMatrix a = from_triplets(n, n, t);
+  SchurComplement schur;
+  schur.analyze(a, {0});
+  schur.factorize(a);
+  EXPECT_NEAR(schur.schur()(0, 0), 0.0, 1e-12);
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1, 2);
+  const double spring = 5.0;  // ... held at unknown 0 by a spring
+  Eigen::VectorXd reduced = schur.reduce(b);
+  const Eigen::VectorXd x = schur.expand(b, reduced / (schur.schur()(0, 0) + spring));
+  Eigen::MatrixXd held(a);
+  held(0, 0) += spring;
+  EXPECT_LT((held * x - b).norm(), 1e-12 * b.norm());
+}
+
+TEST(SchurComplement, RefactorizesNewValuesAndRejectsMisuse) {
+  CsrMatrix a = convection_diffusion_2d(6);
+  const Split s = split(int(a.rows()));
+  SchurComplement schur;
+  EXPECT_THROW(schur.factorize(a), Error);
+  EXPECT_THROW(schur.analyze(a, {0, 0}), Error);
+  EXPECT_THROW(schur.analyze(a, {int(a.rows())}), Error);
+  schur.analyze(a, s.interface);
+  EXPECT_TRUE(schur.is_analyzed_for(a, s.interface));
+  EXPECT_FALSE(schur.is_analyzed_for(a, {0}));
+  schur.factorize(a);
+  const Eigen::MatrixXd first = schur.schur();
+  a *= 2.0;
+  schur.factorize(a);
+  EXPECT_LT((schur.schur() - 2.0 * first).norm(), 1e-12 * first.norm());
+  EXPECT_THROW(schur.reduce(Eigen::VectorXd::Ones(3)), Error);
+  EXPECT_THROW(schur.expand(rhs_for(a), Eigen::VectorXd::Ones(1)), Error);
+}
+
+}  // namespace
+}  // namespace pc
