@@ -3,8 +3,6 @@
 #include <chrono>
 #include <cmath>
 
-#include <Eigen/LU>
-
 #include "assembly/error.hpp"
 
 namespace pc {
@@ -56,6 +54,7 @@ NewtonSolver::NewtonSolver(NewtonOptions options) : options_(std::move(options))
   require(options_.backtrack_factor > 0 && options_.backtrack_factor < 1, "Newton: backtrack_factor must be in (0, 1), got ",
           options_.backtrack_factor);
   linear_ = make_linear_solver(options_.linear_solver);
+  condensed_ = std::make_unique<CondensedSolve>(condensation_from_string(options_.condensation), options_.linear_solver);
 }
 
 Eigen::VectorXd NewtonSolver::full_step(Model& model, NewtonReport& report) {
@@ -80,110 +79,23 @@ Eigen::VectorXd NewtonSolver::full_step(Model& model, NewtonReport& report) {
 
 bool NewtonSolver::condensation_applies(Model& model) const {
   if (options_.condensed_max_fraction <= 0) return false;
-  if (linear_part_singular_ && linear_part_model_ == &model) return false;
+  if (uncondensable_model_ == &model) return false;
   const double m = double(model.nonlinear_dofs().size());
   // m = 0 (a linear model) also gains: the factorisation of A is kept from step to step.
   return m <= options_.condensed_max_fraction * model.layout().size();
 }
 
-// J = A + P^T D P, with A the linear part and D the nonlinear part on the m nonlinear dofs (P selects
-// them). With y = A^-1 b and S = P A^-1 P^T: (I + S D) z = P y, then dx = A^-1 (b - P^T D z).
 Eigen::VectorXd NewtonSolver::condensed_step(Model& model, NewtonReport& report) {
+  report.condensed = true;
   try {
-    return condensed_step_or_throw(model, report);
+    return condensed_->step(model, -model.residual(), report);
   } catch (const Error&) {
-    // The linear part alone is singular (e.g. a body held only by its contact): solve in full from now
-    // on; a genuinely singular J then fails there with the solver's message.
-    linear_part_singular_ = true;
-    linear_part_model_ = &model;
+    // The linear part (or, for the Schur method, its interior) is singular: solve in full from now on;
+    // a genuinely singular J then fails there with the solver's message.
+    uncondensable_model_ = &model;
     report.condensed = false;
     return full_step(model, report);
   }
-}
-
-Eigen::VectorXd NewtonSolver::condensed_step_or_throw(Model& model, NewtonReport& report) {
-  report.condensed = true;
-  const std::vector<int>& nonlinear = model.nonlinear_dofs();
-  const int m = static_cast<int>(nonlinear.size());
-  const CsrMatrix& A = model.linear_jacobian();
-  const int n = static_cast<int>(A.rows());
-  if (!linear_part_) linear_part_ = make_linear_solver(options_.linear_solver);
-  if (linear_part_model_ != &model || linear_part_version_ != model.linear_jacobian_version() ||
-      int(capacitance_columns_.size()) != m) {
-    auto t = Clock::now();
-    if (!linear_part_->is_analyzed_for(A)) {
-      linear_part_->analyze(A);
-      report.analyze_seconds += seconds_since(t);
-      ++analyses_;
-    }
-    t = Clock::now();
-    linear_part_->factorize(A);
-    report.factorize_seconds += seconds_since(t);
-    ++report.factorizations;
-    position_.assign(n, -1);
-    for (int i = 0; i < m; ++i) position_[nonlinear[i]] = i;
-    capacitance_columns_.assign(m, Eigen::VectorXd());
-    linear_part_model_ = &model;
-    linear_part_version_ = model.linear_jacobian_version();
-    linear_part_singular_ = false;
-  }
-
-  // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
-  // active dofs where D has a non-zero row or column (for contact, the nodes in compression).
-  auto t = Clock::now();
-  const CsrMatrix& J = model.jacobian();
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(m, m);
-  std::vector<char> active(m, 0);
-  for (int i = 0; i < m; ++i) {
-    const int row = nonlinear[i];
-    for (int k = J.outerIndexPtr()[row]; k < J.outerIndexPtr()[row + 1]; ++k) {
-      const int j = position_[J.innerIndexPtr()[k]];
-      if (j < 0) continue;
-      D(i, j) = J.valuePtr()[k] - A.valuePtr()[k];
-      if (D(i, j) != 0) active[i] = active[j] = 1;
-    }
-  }
-  std::vector<int> I;
-  for (int i = 0; i < m; ++i)
-    if (active[i]) I.push_back(i);
-  report.condensation_seconds += seconds_since(t);
-
-  const Eigen::VectorXd b = -model.residual();
-  t = Clock::now();
-  const Eigen::VectorXd y = linear_part_->solve(b);
-  report.solve_seconds += seconds_since(t);
-  if (I.empty()) return y;
-
-  // Columns of S = P A^-1 P^T, computed once per factorisation of A for each dof that becomes active.
-  t = Clock::now();
-  Eigen::VectorXd unit = Eigen::VectorXd::Zero(n);
-  for (int j : I) {
-    if (capacitance_columns_[j].size() > 0) continue;
-    unit[nonlinear[j]] = 1;
-    const Eigen::VectorXd column = linear_part_->solve(unit);
-    unit[nonlinear[j]] = 0;
-    capacitance_columns_[j].resize(m);
-    for (int i = 0; i < m; ++i) capacitance_columns_[j][i] = column[nonlinear[i]];
-  }
-  const int a = static_cast<int>(I.size());
-  Eigen::MatrixXd S(a, a), Da(a, a);
-  Eigen::VectorXd Py(a);
-  for (int q = 0; q < a; ++q) {
-    Py[q] = y[nonlinear[I[q]]];
-    for (int p = 0; p < a; ++p) {
-      S(p, q) = capacitance_columns_[I[q]][I[p]];
-      Da(p, q) = D(I[p], I[q]);
-    }
-  }
-  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + S * Da).partialPivLu().solve(Py);
-  const Eigen::VectorXd w = Da * z;
-  Eigen::VectorXd corrected = b;
-  for (int q = 0; q < a; ++q) corrected[nonlinear[I[q]]] -= w[q];
-  report.condensation_seconds += seconds_since(t);
-  t = Clock::now();
-  Eigen::VectorXd dx = linear_part_->solve(corrected);
-  report.solve_seconds += seconds_since(t);
-  return dx;
 }
 
 NewtonReport NewtonSolver::solve(Model& model) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "assembly/linear_solver.hpp"
+#include "models/condensed_solve.hpp"
 #include "models/model.hpp"
 
 namespace pc {
@@ -38,12 +39,14 @@ struct NewtonOptions {
   // reference, if the first was smaller) means divergence.
   double divergence_factor = 1e12;
   std::string linear_solver = "umfpack";
-  // Condensed solve: when only a few dofs carry nonlinear terms (the contact boundary), factorise the
-  // linear part A once per step size and solve each iteration's J = A + P^T D P through the small
-  // capacitance system on those dofs (Sherman-Morrison-Woodbury): two solves with A's factors and a
-  // dense solve on the active ones per iteration, instead of a new factorisation. Used when the nonlinear dofs are at
+  // Condensed solve (models/condensed_solve.hpp): when only a few dofs carry nonlinear terms (the contact
+  // boundary), factorise the linear part once per step size and solve each iteration through a small
+  // dense system on the active ones, instead of a new factorisation. Used when the nonlinear dofs are at
   // most this fraction of all; 0 disables it.
   double condensed_max_fraction = 0.25;
+  // "schur" (MUMPS's Schur complement of the interior: one solve's worth of work per iteration) or
+  // "columns" (any linear_solver: two solves per iteration, plus one per newly active dof and factorisation).
+  std::string condensation = "schur";
 };
 
 enum class NewtonOutcome { Converged, MaxIterations, Diverged, SingularTangent };
@@ -63,7 +66,7 @@ struct NewtonReport {
   std::vector<std::string> blocks;       // the unknowns, in block order
   std::vector<NewtonIteration> history;  // history[0] is the initial residual
   double assembly_seconds = 0, analyze_seconds = 0, factorize_seconds = 0, solve_seconds = 0, total_seconds = 0;
-  double condensation_seconds = 0;  // building and solving the capacitance systems (condensed solve)
+  double condensation_seconds = 0;  // the dense interface systems of the condensed solve
   int factorizations = 0;           // sparse factorisations done by this solve
   bool condensed = false;           // whether the condensed solve was used
   std::map<std::string, double> diagnostics;  // the model's, at the end
@@ -85,7 +88,6 @@ class NewtonSolver {
   // One Newton step dx with J dx = -R, by full factorisation or through the condensed system.
   Eigen::VectorXd full_step(Model& model, NewtonReport& report);
   Eigen::VectorXd condensed_step(Model& model, NewtonReport& report);
-  Eigen::VectorXd condensed_step_or_throw(Model& model, NewtonReport& report);
   bool condensation_applies(Model& model) const;
 
   NewtonOptions options_;
@@ -93,14 +95,9 @@ class NewtonSolver {
   const CsrMatrix* analyzed_matrix_ = nullptr;
   long analyzed_nonzeros_ = -1;
   int analyses_ = 0;
-  // Condensed solve: A's factorisation, the version of A it was made for, and the columns of
-  // S = P A^-1 P^T computed so far (each on first need: only active nonlinear dofs need one).
-  std::unique_ptr<LinearSolver> linear_part_;
-  std::uint64_t linear_part_version_ = 0;
-  const Model* linear_part_model_ = nullptr;
-  std::vector<Eigen::VectorXd> capacitance_columns_;
-  std::vector<int> position_;  // position of a global dof among the nonlinear dofs, or -1
-  bool linear_part_singular_ = false;
+  std::unique_ptr<CondensedSolve> condensed_;
+  // The model whose linear part could not be condensed (singular): it is solved in full from then on.
+  const Model* uncondensable_model_ = nullptr;
 };
 
 }  // namespace pc

@@ -285,9 +285,13 @@ Scene load_scene(const Json& json, const std::string& directory) {
     const Json* s = json.find("solver");
     if (!s) return;
     require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog",
-                            "cutback_factor", "condensed"});
+                            "cutback_factor", "condensed", "condensation"});
     if (const Json* x = s->find("condensed"))
       scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
+    if (const Json* x = s->find("condensation")) {
+      scene.newton.condensation = x->as_string();
+      condensation_from_string(scene.newton.condensation);  // an unknown name fails here, listing the known ones
+    }
     if (const Json* x = s->find("linear")) {
       scene.newton.linear_solver = x->as_string();
       make_linear_solver(scene.newton.linear_solver);  // an unknown name fails here, listing the known ones

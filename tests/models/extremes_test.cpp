@@ -179,25 +179,28 @@ TEST(Extremes, ContactPotentialFollowsLargeFoundationVoltagesOfEitherSign) {
 }
 
 // With c_nu = 1e16 the contact block of the tangent exceeds the linear part's by ten orders: the
-// condensed solve (linear part factorised, contact dofs through I + S D) must still reach the plain
-// Newton's solution, in many steps and in one. Its steps are less accurate there (measured: the residual
-// after the first iteration of a step 3e-12 against 5e-19, from the cancellation in b - P^T D z), which
-// may cost one more iteration per step, not more.
+// condensed solve, by both methods (Schur complement of the interior; Woodbury columns of A^-1), must
+// still reach the plain Newton's solution, in many steps and in one. Its steps may be less accurate there
+// (columns: the residual after the first iteration of a step 3e-12 against 5e-19, from the cancellation
+// in b - P^T D z), which may cost one more iteration per step, not more.
 TEST(Extremes, CondensedSolveMatchesTheFullOneAtTheStiffestContact) {
-  for (const char* steps : {"time.steps=10", "time.steps=1"}) {
-    const Scene condensed = coarse({"contact.c_nu=1e16", steps, "solver.condensed=true"});
-    const Scene full = coarse({"contact.c_nu=1e16", steps, "solver.condensed=false"});
-    for (const std::string name : {"insulated", "conductive"}) {
-      const FoundationRunResult a = run_foundation(condensed, find_foundation(condensed, name), "", false);
-      const FoundationRunResult b = run_foundation(full, find_foundation(full, name), "", false);
-      ASSERT_TRUE(a.completed && b.completed) << steps << ", " << name << ": " << a.message << b.message;
-      EXPECT_LE(a.newton_iterations_total, b.newton_iterations_total + a.steps) << steps << ", " << name;
-      const auto x = numbers(a), y = numbers(b);
-      for (size_t i = 1; i < x.size(); ++i)
-        EXPECT_NEAR(x[i].second, y[i].second, 1e-8 * std::abs(y[i].second) + 1e-20) << steps << ", " << name << ": "
-                                                                                      << x[i].first;
+  for (const char* steps : {"time.steps=10", "time.steps=1"})
+    for (const char* method : {"schur", "columns"}) {
+      const std::string where = std::string(steps) + ", " + method;
+      const Scene condensed =
+          coarse({"contact.c_nu=1e16", steps, "solver.condensed=true", "solver.condensation=\"" + std::string(method) + "\""});
+      const Scene full = coarse({"contact.c_nu=1e16", steps, "solver.condensed=false"});
+      for (const std::string name : {"insulated", "conductive"}) {
+        const FoundationRunResult a = run_foundation(condensed, find_foundation(condensed, name), "", false);
+        const FoundationRunResult b = run_foundation(full, find_foundation(full, name), "", false);
+        ASSERT_TRUE(a.completed && b.completed) << where << ", " << name << ": " << a.message << b.message;
+        EXPECT_LE(a.newton_iterations_total, b.newton_iterations_total + a.steps) << where << ", " << name;
+        const auto x = numbers(a), y = numbers(b);
+        for (size_t i = 1; i < x.size(); ++i)
+          EXPECT_NEAR(x[i].second, y[i].second, 1e-8 * std::abs(y[i].second) + 1e-20)
+              << where << ", " << name << ": " << x[i].first;
+      }
     }
-  }
 }
 
 // The stiffest contact without inertia or viscosity, P2 on 24 x 8: at rest every contact node sits on the

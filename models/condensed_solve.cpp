@@ -1,0 +1,178 @@
+#include "models/condensed_solve.hpp"
+
+#include <chrono>
+
+#include "assembly/error.hpp"
+#include "models/model.hpp"
+#include "models/newton.hpp"
+
+namespace pc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Below this estimate of 1/cond(S_c), S_c counts as singular and S_c + D is factorised per iteration.
+constexpr double kMinSchurReciprocalCondition = 1e-13;
+
+Eigen::MatrixXd submatrix(const Eigen::MatrixXd& a, const std::vector<int>& rows, const std::vector<int>& cols) {
+  Eigen::MatrixXd b(rows.size(), cols.size());
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < cols.size(); ++j) b(i, j) = a(rows[i], cols[j]);
+  return b;
+}
+
+}  // namespace
+
+Condensation condensation_from_string(const std::string& name) {
+  if (name == "schur") return Condensation::Schur;
+  if (name == "columns") return Condensation::Columns;
+  fail("unknown condensation \"", name, "\"; known: schur, columns");
+}
+
+std::string to_string(Condensation method) { return method == Condensation::Schur ? "schur" : "columns"; }
+
+CondensedSolve::CondensedSolve(Condensation method, std::string linear_solver)
+    : method_(method), linear_solver_name_(std::move(linear_solver)) {}
+
+void CondensedSolve::prepare(Model& model, NewtonReport& report) {
+  const std::vector<int>& nonlinear = model.nonlinear_dofs();
+  if (model_ == &model && version_ == model.linear_jacobian_version() && nonlinear_ == nonlinear) return;
+  model_ = nullptr;  // until the factorisation below succeeds
+  const CsrMatrix& A = model.linear_jacobian();
+  nonlinear_ = nonlinear;
+  position_.assign(A.rows(), -1);
+  for (size_t i = 0; i < nonlinear_.size(); ++i) position_[nonlinear_[i]] = int(i);
+
+  auto t = Clock::now();
+  if (method_ == Condensation::Schur && !nonlinear_.empty()) {
+    if (!schur_) schur_ = std::make_unique<SchurComplement>();
+    if (!schur_->is_analyzed_for(A, nonlinear_)) {
+      schur_->analyze(A, nonlinear_);
+      report.analyze_seconds += seconds_since(t);
+      t = Clock::now();
+    }
+    schur_->factorize(A);
+    report.factorize_seconds += seconds_since(t);
+    t = Clock::now();
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur_->schur());
+    schur_regular_ = lu.rcond() > kMinSchurReciprocalCondition;
+    if (schur_regular_) schur_inverse_ = lu.inverse();
+    report.condensation_seconds += seconds_since(t);
+  } else {
+    // Columns, or a linear model (m = 0): A's own factorisation, kept from step to step.
+    if (!linear_) linear_ = make_linear_solver(linear_solver_name_);
+    if (!linear_->is_analyzed_for(A)) {
+      linear_->analyze(A);
+      report.analyze_seconds += seconds_since(t);
+      t = Clock::now();
+    }
+    linear_->factorize(A);
+    report.factorize_seconds += seconds_since(t);
+    columns_.assign(nonlinear_.size(), Eigen::VectorXd());
+  }
+  ++report.factorizations;
+  model_ = &model;
+  version_ = model.linear_jacobian_version();
+}
+
+Eigen::VectorXd CondensedSolve::step(Model& model, const Eigen::VectorXd& b, NewtonReport& report) {
+  prepare(model, report);
+  // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
+  // active dofs where D has a non-zero row or column (for contact, the nodes in compression).
+  const auto t = Clock::now();
+  const CsrMatrix& J = model.jacobian();
+  const CsrMatrix& A = model.linear_jacobian();
+  const int m = static_cast<int>(nonlinear_.size());
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(m, m);
+  std::vector<char> is_active(m, 0);
+  for (int i = 0; i < m; ++i) {
+    const int row = nonlinear_[i];
+    for (int k = J.outerIndexPtr()[row]; k < J.outerIndexPtr()[row + 1]; ++k) {
+      const int j = position_[J.innerIndexPtr()[k]];
+      if (j < 0) continue;
+      D(i, j) = J.valuePtr()[k] - A.valuePtr()[k];
+      if (D(i, j) != 0) is_active[i] = is_active[j] = 1;
+    }
+  }
+  std::vector<int> active;
+  for (int i = 0; i < m; ++i)
+    if (is_active[i]) active.push_back(i);
+  report.condensation_seconds += seconds_since(t);
+  return method_ == Condensation::Schur && m > 0 ? schur_step(D, active, b, report) : columns_step(D, active, b, report);
+}
+
+// (S_c + D) x_c = r with r = reduce(b), by Woodbury on S_c^-1 over the active dofs I:
+//   x_c = t - S_c^-1[:, I] (1 + D_II S_c^-1[I, I])^-1 D_II t_I,  t = S_c^-1 r,
+// then dx = expand(b, x_c).
+Eigen::VectorXd CondensedSolve::schur_step(const Eigen::MatrixXd& D, const std::vector<int>& active,
+                                           const Eigen::VectorXd& b, NewtonReport& report) {
+  auto t = Clock::now();
+  const Eigen::VectorXd r = schur_->reduce(b);
+  report.solve_seconds += seconds_since(t);
+  t = Clock::now();
+  Eigen::VectorXd x_c;
+  if (!schur_regular_) {
+    x_c = (schur_->schur() + D).partialPivLu().solve(r);
+  } else {
+    x_c = schur_inverse_ * r;
+    if (!active.empty()) {
+      const int a = static_cast<int>(active.size());
+      std::vector<int> all(D.rows());
+      for (int i = 0; i < int(all.size()); ++i) all[i] = i;
+      const Eigen::MatrixXd Da = submatrix(D, active, active);
+      Eigen::VectorXd t_active(a);
+      for (int q = 0; q < a; ++q) t_active[q] = x_c[active[q]];
+      const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + Da * submatrix(schur_inverse_, active, active))
+                                    .partialPivLu()
+                                    .solve(Da * t_active);
+      x_c -= submatrix(schur_inverse_, all, active) * z;
+    }
+  }
+  report.condensation_seconds += seconds_since(t);
+  t = Clock::now();
+  Eigen::VectorXd dx = schur_->expand(b, x_c);
+  report.solve_seconds += seconds_since(t);
+  return dx;
+}
+
+// With y = A^-1 b and S = P A^-1 P^T: (1 + S_II D_II) z = y_I, then dx = A^-1 (b - P_I^T D_II z).
+Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std::vector<int>& active,
+                                             const Eigen::VectorXd& b, NewtonReport& report) {
+  auto t = Clock::now();
+  const Eigen::VectorXd y = linear_->solve(b);
+  report.solve_seconds += seconds_since(t);
+  if (active.empty()) return y;
+
+  // Columns of S, computed once per factorisation of A for each dof that becomes active.
+  t = Clock::now();
+  const int m = static_cast<int>(nonlinear_.size());
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(b.size());
+  for (int j : active) {
+    if (columns_[j].size() > 0) continue;
+    unit[nonlinear_[j]] = 1;
+    const Eigen::VectorXd column = linear_->solve(unit);
+    unit[nonlinear_[j]] = 0;
+    columns_[j].resize(m);
+    for (int i = 0; i < m; ++i) columns_[j][i] = column[nonlinear_[i]];
+  }
+  const int a = static_cast<int>(active.size());
+  Eigen::MatrixXd S(a, a);
+  Eigen::VectorXd y_active(a);
+  for (int q = 0; q < a; ++q) {
+    y_active[q] = y[nonlinear_[active[q]]];
+    for (int p = 0; p < a; ++p) S(p, q) = columns_[active[q]][active[p]];
+  }
+  const Eigen::MatrixXd Da = submatrix(D, active, active);
+  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + S * Da).partialPivLu().solve(y_active);
+  const Eigen::VectorXd w = Da * z;
+  Eigen::VectorXd corrected = b;
+  for (int q = 0; q < a; ++q) corrected[nonlinear_[active[q]]] -= w[q];
+  report.condensation_seconds += seconds_since(t);
+  t = Clock::now();
+  Eigen::VectorXd dx = linear_->solve(corrected);
+  report.solve_seconds += seconds_since(t);
+  return dx;
+}
+
+}  // namespace pc

@@ -1,0 +1,66 @@
+#pragma once
+// The Newton step through a small system on the contact dofs. Inside a time step only the nonlinear bricks
+// change, and they fill the rows and columns of a few dofs (the contact boundary's, Model::nonlinear_dofs):
+//   J = A + P^T D P,   A the linear part (Model::linear_jacobian), D the nonlinear part on those m dofs.
+// A is factorised once per change of its values (once per step size), and each iteration solves J dx = b
+// through that factorisation and a dense system on the active dofs (those where D is non-zero). Two methods:
+//   Schur    MUMPS factorises A with the m dofs eliminated last and returns the Schur complement S_c of the
+//            interior (assembly/schur_complement.hpp); S_c^-1 is formed once. An iteration is a reduction
+//            (forward substitution), the Woodbury formula on S_c + D with S_c^-1 (a dense solve on the
+//            active dofs) and an expansion (backward substitution): one solve's worth of sparse work.
+//            Only the interior must be regular (A may be singular: a body held by its contact only).
+//   Columns  any linear solver: the columns of S = P A^-1 P^T by one solve per active dof (cached per
+//            factorisation), then the Woodbury formula: two solves per iteration. A must be regular.
+// Both throw pc::Error when their factorisation fails; the caller then solves in full.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include "assembly/linear_solver.hpp"
+#include "assembly/schur_complement.hpp"
+
+namespace pc {
+
+class Model;
+struct NewtonReport;
+
+enum class Condensation { Schur, Columns };
+Condensation condensation_from_string(const std::string& name);  // "schur" | "columns"
+std::string to_string(Condensation method);
+
+class CondensedSolve {
+ public:
+  CondensedSolve(Condensation method, std::string linear_solver);
+  // The step dx with J dx = b for the model's current (assembled) Jacobian; timings and factorisations
+  // go into the report.
+  Eigen::VectorXd step(Model& model, const Eigen::VectorXd& b, NewtonReport& report);
+  Condensation method() const { return method_; }
+
+ private:
+  // Refactorises A when the model, its linear part or its nonlinear dofs changed.
+  void prepare(Model& model, NewtonReport& report);
+  Eigen::VectorXd schur_step(const Eigen::MatrixXd& D, const std::vector<int>& active, const Eigen::VectorXd& b,
+                             NewtonReport& report);
+  Eigen::VectorXd columns_step(const Eigen::MatrixXd& D, const std::vector<int>& active, const Eigen::VectorXd& b,
+                               NewtonReport& report);
+
+  Condensation method_;
+  std::string linear_solver_name_;
+  const Model* model_ = nullptr;
+  std::uint64_t version_ = 0;
+  std::vector<int> nonlinear_;
+  std::vector<int> position_;  // position of a global dof among the nonlinear dofs, or -1
+  // Schur: the factorisation, and S_c^-1 when S_c is regular (else S_c + D is factorised per iteration).
+  std::unique_ptr<SchurComplement> schur_;
+  Eigen::MatrixXd schur_inverse_;
+  bool schur_regular_ = false;
+  // Columns: A's factorisation and the columns of S computed so far.
+  std::unique_ptr<LinearSolver> linear_;
+  std::vector<Eigen::VectorXd> columns_;
+};
+
+}  // namespace pc
