@@ -255,9 +255,11 @@ Scene load_scene(const Json& json, const std::string& directory) {
 
   problems.check_void([&] {
     const Json& t = json.at("time");
-    require_known_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "theta"});
+    require_known_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "theta", "max_attempts", "max_wall_seconds"});
     scene.end_time = t.at("T").as_positive();
     scene.steps = t.at("steps").as_int_at_least(1);
+    if (const Json* x = t.find("max_attempts")) scene.max_attempts = x->as_int_at_least(0);
+    if (const Json* x = t.find("max_wall_seconds")) scene.max_wall_seconds = x->as_number_in(0, 1e12);
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     const std::string p = t.contains("prediction") ? t.at("prediction").as_string() : "previous";

@@ -48,6 +48,8 @@ struct Scene {
   Prediction prediction = Prediction::Previous;
   NewtonOptions newton;
   double cutback_factor = 0.5;
+  int max_attempts = 0;           // time.max_attempts: step attempts, accepted or cut back (0: no limit)
+  double max_wall_seconds = 0;    // time.max_wall_seconds (0: no limit)
   SceneOutput output;
 };
 

@@ -189,6 +189,8 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
   options.cutback_factor = scene.cutback_factor;
   options.prediction = scene.prediction;
   options.output_every = scene.output.vtu_every;
+  options.max_attempts = scene.max_attempts;
+  options.max_wall_seconds = scene.max_wall_seconds;
   NewtonSolver newton(scene.newton);
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");

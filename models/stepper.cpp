@@ -29,6 +29,9 @@ Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
   require(o.cutback_factor > 0 && o.cutback_factor < 1, "cutback_factor must be in (0, 1), got ", o.cutback_factor);
   require(o.growth_factor >= 1, "growth_factor must be >= 1, got ", o.growth_factor);
   require(o.output_every >= 1, "output_every must be >= 1, got ", o.output_every);
+  require(o.max_attempts >= 0, "max_attempts must be >= 0 (0: no limit), got ", o.max_attempts);
+  require(std::isfinite(o.max_wall_seconds) && o.max_wall_seconds >= 0,
+          "max_wall_seconds must be finite and >= 0 (0: no limit), got ", o.max_wall_seconds);
   if (options_.min_step <= 0) options_.min_step = o.step * 1e-6;
 }
 
@@ -59,8 +62,20 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
 
   const double tiny = 1e-12 * (o.end - o.start);
   double t = o.start, dt = o.step;
-  int successes = 0;
+  int successes = 0, attempts = 0;
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   while (t < o.end - tiny) {
+    if (o.max_attempts > 0 && attempts >= o.max_attempts) {
+      summary.message = message("stopped at t = ", t, " after ", attempts, " step attempts (", summary.steps,
+                                " accepted): the limit max_attempts = ", o.max_attempts, " was reached");
+      break;
+    }
+    if (o.max_wall_seconds > 0 && elapsed() >= o.max_wall_seconds) {
+      summary.message = message("stopped at t = ", t, " after ", summary.steps, " steps: the wall-time limit of ",
+                                o.max_wall_seconds, " s was reached");
+      break;
+    }
+    ++attempts;
     const double attempt = std::min(dt, o.end - t);
     const auto saved = save_unknowns(model);
     scheme.begin_step(model, attempt);
@@ -102,7 +117,7 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
     }
   }
   summary.completed = t >= o.end - tiny;
-  summary.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary.wall_seconds = elapsed();
   return summary;
 }
 

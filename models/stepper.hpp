@@ -24,6 +24,11 @@ struct StepperOptions {
   double growth_factor = 2;          // after `successes_before_growth` good steps, grow back toward `step`
   int successes_before_growth = 3;
   int output_every = 1;              // output callback every N accepted steps (and at the start and the end)
+  // Budgets (0: none). A run that hits one stops with a message saying which, its results so far written:
+  // a cap on step attempts (accepted and cut back) bounds endless cut-back and regrowth cycles, and a
+  // wall-time limit bounds a batch job.
+  int max_attempts = 0;
+  double max_wall_seconds = 0;
   Prediction prediction = Prediction::Zero;
   bool initial_potential = true;     // solve the electric equation at t = start with u = u0 (the paper's phi_0)
   std::string potential = "phi";

@@ -224,5 +224,21 @@ TEST(Extremes, StiffestContactConvergesWithoutCutBack) {
   EXPECT_LT(r.newton_iterations_max_per_step, scene.newton.max_iterations);
 }
 
+// Budgets: a run stops cleanly when its step attempts or its wall time are spent, saying which.
+TEST(Extremes, RunsStopAtTheirBudgetWithAMessageNamingIt) {
+  const Scene capped = coarse({"time.max_attempts=3"});
+  const FoundationRunResult a = run_foundation(capped, find_foundation(capped, "conductive"), "", false);
+  EXPECT_FALSE(a.completed);
+  EXPECT_EQ(a.steps, 3);
+  EXPECT_NE(a.message.find("max_attempts = 3"), std::string::npos) << a.message;
+
+  const Scene timed = coarse({"time.max_wall_seconds=1e-9"});
+  const FoundationRunResult b = run_foundation(timed, find_foundation(timed, "conductive"), "", false);
+  EXPECT_FALSE(b.completed);
+  EXPECT_NE(b.message.find("wall-time limit"), std::string::npos) << b.message;
+
+  EXPECT_THROW(coarse({"time.max_attempts=-1"}), Error);
+}
+
 }  // namespace
 }  // namespace pc
