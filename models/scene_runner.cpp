@@ -204,12 +204,15 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
     series = std::make_unique<ResultSeries>(dir, scene.name);
   }
   StepperCallbacks callbacks;
+  auto add_phases = [&](const NewtonReport& newton) {
+    result.assembly_seconds += newton.assembly_seconds;
+    result.factorize_seconds += newton.factorize_seconds + newton.analyze_seconds;
+    result.solve_seconds += newton.solve_seconds;
+    result.condensation_seconds += newton.condensation_seconds;
+    result.factorizations += newton.factorizations;
+  };
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
-    result.assembly_seconds += r.newton.assembly_seconds;
-    result.factorize_seconds += r.newton.factorize_seconds + r.newton.analyze_seconds;
-    result.solve_seconds += r.newton.solve_seconds;
-    result.condensation_seconds += r.newton.condensation_seconds;
-    result.factorizations += r.newton.factorizations;
+    add_phases(r.newton);
     if (history)
       history->row({r.time, probe(model, locator, "u", 1, scene.output.corner),
                     electric ? probe(model, locator, "phi", 0, scene.output.center) : 0.0,
@@ -232,6 +235,7 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
     }
   };
   callbacks.on_output = [&](const Model& model, const StepRecord& r) {
+    if (r.step == 0) add_phases(r.newton);  // the initial potential's solve (empty without a potential)
     if (!series) return;
     VtuWriter writer(mesh);
     add_piezo_output(writer, model, built.material);

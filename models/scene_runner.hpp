@@ -30,7 +30,8 @@ struct FoundationRunResult {
   double max_abs_ux = 0, max_abs_uy = 0, phi_min = 0, phi_max = 0, uy_corner = 0, ux_corner = 0, phi_center = 0;
   double max_abs_vtau_contact = 0;
   int n_slip_nodes = 0, n_contact_nodes = 0;
-  // Time per phase, summed over the steps' Newton solves, and sparse factorisations done.
+  // Time per phase, summed over the Newton solves of the steps and of the initial potential, and the
+  // sparse factorisations done.
   double assembly_seconds = 0, factorize_seconds = 0, solve_seconds = 0, condensation_seconds = 0;
   int factorizations = 0;
   std::string message;

@@ -76,7 +76,10 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       break;
     }
     ++attempts;
-    const double attempt = std::min(dt, o.end - t);
+    // The last step lands on `end`; a remainder within round-off of dt is dt itself, so that a run of equal
+    // steps keeps one step size to the end (a new size would refactorise the linear part).
+    const double remaining = o.end - t;
+    const double attempt = remaining < dt - tiny ? remaining : dt;
     const auto saved = save_unknowns(model);
     scheme.begin_step(model, attempt);
     model.set_time(t + attempt);
@@ -100,7 +103,7 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       continue;
     }
     scheme.end_step(model, attempt);
-    t += attempt;
+    t = remaining <= dt + tiny ? o.end : t + attempt;
     ++summary.steps;
     summary.newton_iterations_max_per_step = std::max(summary.newton_iterations_max_per_step, report.iterations);
     record.step = summary.steps;
