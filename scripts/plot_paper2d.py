@@ -17,16 +17,10 @@ import json
 import os
 import sys
 
-try:
-    import numpy as np
-    import matplotlib
-except ImportError:
-    # e.g. a pyenv python3 in PATH that does not see Debian's packages: retry with the system one
-    if os.path.exists("/usr/bin/python3") and not os.environ.get("PLOT_PAPER2D_REEXEC"):
-        os.environ["PLOT_PAPER2D_REEXEC"] = "1"
-        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
-    sys.exit("error: numpy and matplotlib are needed (apt-get install python3-numpy python3-matplotlib)")
-matplotlib.use("Agg")
+from plot_support import require_plotting
+
+require_plotting("numpy", "matplotlib")
+import numpy as np  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
