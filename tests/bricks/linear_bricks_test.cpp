@@ -22,6 +22,7 @@
 #include "bricks/testing/brick_checker.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "bricks/voigt.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
@@ -442,17 +443,7 @@ TEST(LinearBricks, DirichletBrickHandsOverItsCondition) {
 
 // (d) Errors name what is wrong.
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
+using testing::error_of;
 
 TEST(LinearBricks, BadDataIsRefusedWithTheDatumNamed) {
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -13,6 +13,7 @@
 
 #include "assembly/error.hpp"
 #include "bricks/voigt.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
@@ -62,17 +63,7 @@ Eigen::Matrix3d rotation(double angle, const Eigen::Vector3d& axis) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
 }
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << (text)
+using testing::error_of;
 
 TEST(Voigt, IsotropicStiffnessIsLameLaw) {
   std::mt19937 rng(3);

@@ -17,18 +17,14 @@
 
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::read_text;
 
 std::string base64_decode(const std::string& text) {
   auto sextet = [](char c) -> int {

@@ -20,18 +20,14 @@
 #include "models/model.hpp"
 #include "models/piezo_fields.hpp"
 #include "models/result_series.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::read_text;
 
 std::vector<std::string> read_lines(const fs::path& path) {
   std::ifstream in(path);
