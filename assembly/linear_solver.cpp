@@ -38,18 +38,6 @@ int row_of_slot(const CsrMatrix& matrix, Eigen::Index slot) {
   return static_cast<int>(std::upper_bound(outer, outer + matrix.rows() + 1, slot) - outer - 1);
 }
 
-// First row whose column indices differ between two compressed matrices of equal size, or -1.
-int first_differing_row(const CsrMatrix& a, const CsrMatrix& b) {
-  for (int row = 0; row < a.rows(); ++row) {
-    const int begin = a.outerIndexPtr()[row];
-    const int end = a.outerIndexPtr()[row + 1];
-    if (b.outerIndexPtr()[row + 1] != end ||
-        !std::equal(a.innerIndexPtr() + begin, a.innerIndexPtr() + end, b.innerIndexPtr() + begin))
-      return row;
-  }
-  return -1;
-}
-
 void require_compressed(const std::string& solver, const CsrMatrix& matrix) {
   // The back ends read the CSR arrays directly; an uncompressed matrix has gaps in them.
   require(matrix.isCompressed(), solver, ": the matrix is not compressed (call makeCompressed())");
@@ -111,9 +99,7 @@ Eigen::VectorXd SolverBase::solve(const Eigen::VectorXd& b) const {
 }
 
 bool SolverBase::is_analyzed_for(const CsrMatrix& matrix) const {
-  return analyzed_ && matrix.isCompressed() && matrix.rows() == matrix_.rows() &&
-         matrix.cols() == matrix_.cols() && matrix.nonZeros() == matrix_.nonZeros() &&
-         first_differing_row(matrix, matrix_) < 0;
+  return analyzed_ && matrix.isCompressed() && same_pattern(matrix, matrix_);
 }
 
 Eigen::VectorXd LinearSolver::solve_once(const CsrMatrix& matrix, const Eigen::VectorXd& b) {

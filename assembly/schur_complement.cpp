@@ -5,16 +5,6 @@
 #include "assembly/error.hpp"
 
 namespace pc {
-namespace {
-
-bool same_pattern(const CsrMatrix& a, const CsrMatrix& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() && a.nonZeros() == b.nonZeros() &&
-         std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.rows() + 1, b.outerIndexPtr()) &&
-         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
-}
-
-}  // namespace
-
 void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interface) {
   analyzed_ = factorized_ = false;
   require(a.rows() == a.cols() && a.rows() > 0, "Schur complement: the matrix is ", a.rows(), " x ", a.cols(),

@@ -10,4 +10,9 @@ using CsrMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 // Slot of entry (row, col) in a compressed CSR matrix, or -1 if the pattern lacks it (binary search).
 int find_slot(const CsrMatrix& matrix, int row, int col);
 
+// First row whose column indices differ between two compressed matrices, or -1 when their sizes and
+// patterns are equal (the number of rows when only the sizes differ).
+int first_differing_row(const CsrMatrix& a, const CsrMatrix& b);
+inline bool same_pattern(const CsrMatrix& a, const CsrMatrix& b) { return first_differing_row(a, b) < 0; }
+
 }  // namespace pc

@@ -15,13 +15,6 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // Below this estimate of 1/cond(S_c), S_c counts as singular and S_c + D is factorised per iteration.
 constexpr double kMinSchurReciprocalCondition = 1e-13;
 
-Eigen::MatrixXd submatrix(const Eigen::MatrixXd& a, const std::vector<int>& rows, const std::vector<int>& cols) {
-  Eigen::MatrixXd b(rows.size(), cols.size());
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (size_t j = 0; j < cols.size(); ++j) b(i, j) = a(rows[i], cols[j]);
-  return b;
-}
-
 }  // namespace
 
 Condensation condensation_from_string(const std::string& name) {
@@ -118,15 +111,11 @@ Eigen::VectorXd CondensedSolve::schur_step(const Eigen::MatrixXd& D, const std::
     x_c = schur_inverse_ * r;
     if (!active.empty()) {
       const int a = static_cast<int>(active.size());
-      std::vector<int> all(D.rows());
-      for (int i = 0; i < int(all.size()); ++i) all[i] = i;
-      const Eigen::MatrixXd Da = submatrix(D, active, active);
-      Eigen::VectorXd t_active(a);
-      for (int q = 0; q < a; ++q) t_active[q] = x_c[active[q]];
-      const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + Da * submatrix(schur_inverse_, active, active))
+      const Eigen::MatrixXd Da = D(active, active);
+      const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + Da * schur_inverse_(active, active))
                                     .partialPivLu()
-                                    .solve(Da * t_active);
-      x_c -= submatrix(schur_inverse_, all, active) * z;
+                                    .solve(Da * x_c(active));
+      x_c -= schur_inverse_(Eigen::all, active) * z;
     }
   }
   report.condensation_seconds += seconds_since(t);
@@ -146,28 +135,24 @@ Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std
 
   // Columns of S, computed once per factorisation of A for each dof that becomes active.
   t = Clock::now();
-  const int m = static_cast<int>(nonlinear_.size());
   Eigen::VectorXd unit = Eigen::VectorXd::Zero(b.size());
   for (int j : active) {
     if (columns_[j].size() > 0) continue;
     unit[nonlinear_[j]] = 1;
     const Eigen::VectorXd column = linear_->solve(unit);
     unit[nonlinear_[j]] = 0;
-    columns_[j].resize(m);
-    for (int i = 0; i < m; ++i) columns_[j][i] = column[nonlinear_[i]];
+    columns_[j] = column(nonlinear_);
   }
   const int a = static_cast<int>(active.size());
   Eigen::MatrixXd S(a, a);
-  Eigen::VectorXd y_active(a);
-  for (int q = 0; q < a; ++q) {
-    y_active[q] = y[nonlinear_[active[q]]];
-    for (int p = 0; p < a; ++p) S(p, q) = columns_[active[q]][active[p]];
-  }
-  const Eigen::MatrixXd Da = submatrix(D, active, active);
-  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + S * Da).partialPivLu().solve(y_active);
+  for (int q = 0; q < a; ++q) S.col(q) = columns_[active[q]](active);
+  std::vector<int> active_dofs(a);
+  for (int q = 0; q < a; ++q) active_dofs[q] = nonlinear_[active[q]];
+  const Eigen::MatrixXd Da = D(active, active);
+  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + S * Da).partialPivLu().solve(y(active_dofs));
   const Eigen::VectorXd w = Da * z;
   Eigen::VectorXd corrected = b;
-  for (int q = 0; q < a; ++q) corrected[nonlinear_[active[q]]] -= w[q];
+  for (int q = 0; q < a; ++q) corrected[active_dofs[q]] -= w[q];
   report.condensation_seconds += seconds_since(t);
   t = Clock::now();
   Eigen::VectorXd dx = linear_->solve(corrected);

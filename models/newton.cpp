@@ -141,7 +141,8 @@ NewtonReport NewtonSolver::solve(Model& model) {
 
   // Watchdog: the best iterate so far, and the full steps taken since it was last improved on.
   const bool watchdog = options_.line_search && options_.watchdog > 0;
-  std::map<std::string, Eigen::VectorXd> best = unknown_values(model);
+  std::map<std::string, Eigen::VectorXd> best;
+  if (watchdog) best = unknown_values(model);
   double best_merit = merit0;
   int since_best = 0;
 

@@ -13,6 +13,7 @@
 #include "assembly/error.hpp"
 #include "assembly/sparse.hpp"
 #include "support/test_matrices.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
@@ -23,15 +24,7 @@ double relative_residual(const CsrMatrix& matrix, const Eigen::VectorXd& x, cons
   return (matrix * x - b).norm() / b.norm();
 }
 
-// The message of the pc::Error thrown by `action`, or a note that none was.
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "<no pc::Error thrown>";
-}
+using testing::error_of;
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;

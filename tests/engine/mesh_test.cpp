@@ -10,22 +10,14 @@
 #include "assembly/error.hpp"
 #include "assembly/mesh.hpp"
 #include "assembly/mesh_generators.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
 
 using ::testing::HasSubstr;
 
-// The message of the pc::Error that `action` throws (fails the test if it throws nothing).
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a pc::Error";
-  return "";
-}
+using testing::error_of;
 
 void expect_normals(const Mesh& mesh, const std::string& region, std::array<double, 3> expected) {
   for (const FaceRef& f : mesh.face_region(region)) {

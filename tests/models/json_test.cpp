@@ -11,6 +11,7 @@
 #include <limits>
 
 #include "assembly/error.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 
@@ -49,16 +50,7 @@ const char* const paper2d = R"json({
 
 Json scene() { return parse_json(paper2d, "paper2d.json"); }
 
-// The message of the pc::Error that `action` throws; fails the test when it throws nothing.
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "expected a pc::Error";
-  return "";
-}
+using testing::error_of;
 
 std::string parse_error(const std::string& text) {
   return error_of([&] { parse_json(text, "in.json"); });

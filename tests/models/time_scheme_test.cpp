@@ -33,6 +33,7 @@
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 #include "support/piezo_mms.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
@@ -428,12 +429,7 @@ TEST(SchemeByName, FactoryRecipeAndSceneChooseTheScheme) {
   EXPECT_EQ(theta.spec.scheme.theta, 0.75);
   EXPECT_EQ(load_scene_file(scene, {"time.scheme=bdf2"}).spec.scheme.type, "bdf2");
   auto problem = [&](const std::vector<std::string>& overrides) {
-    try {
-      load_scene_file(scene, overrides);
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::error_of([&] { load_scene_file(scene, overrides); });
   };
   EXPECT_NE(problem({"time.scheme=leapfrog"}).find("'time.scheme' must be backward_euler"), std::string::npos)
       << problem({"time.scheme=leapfrog"});
