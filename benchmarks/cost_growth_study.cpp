@@ -2,7 +2,7 @@
 // (scenes/paper2d.json, conductive foundation, the harder case), on meshes nx x nx/3 for
 // nx = 30, 60, ..., max_nx in P1 and nx = 30, ..., max_nx/2 in P2 (P2 at nx has the dofs of P1 at 2 nx),
 // each by three Newton paths: the condensed solve (solver.condensed=true) by its two methods, "schur" and
-// "columns" (solver.condensation, see models/condensed_solve.hpp), and "plain" (a factorisation per Newton
+// "columns" (solver.condensation, see models/solvers/condensed_solve.hpp), and "plain" (a factorisation per Newton
 // iteration). Every run has the same number of steps with the scene's own step size (T scaled), so that
 // the cost per step is comparable across meshes.
 // VmHWM is a process-wide high-water mark, so every run goes into a fresh child process (this program,
@@ -27,9 +27,9 @@
 #include <sys/resource.h>
 #include <vector>
 
-#include "models/csv_log.hpp"
-#include "models/newton.hpp"
-#include "models/scene_runner.hpp"
+#include "models/output/csv_log.hpp"
+#include "models/solvers/newton.hpp"
+#include "models/scene/scene_runner.hpp"
 #include "support/child_process.hpp"
 
 namespace {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "../tests/support/extreme_cases.hpp"
-#include "models/scene_runner.hpp"
+#include "models/scene/scene_runner.hpp"
 
 namespace {
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "models/csv_log.hpp"
-#include "models/scene_runner.hpp"
+#include "models/output/csv_log.hpp"
+#include "models/scene/scene_runner.hpp"
 
 using namespace pc;
 

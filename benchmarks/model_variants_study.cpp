@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "models/scene.hpp"
+#include "models/scene/scene.hpp"
 #include "support/child_process.hpp"
 
 namespace {

@@ -9,7 +9,7 @@
 //   c_nu       1e9, 1e10, 1e12, 1e14, 1e16
 //   tolerance  Newton relative tolerance 1e-4, 1e-6, 1e-8, 1e-10, 1e-12
 //   condensation  the Newton step: schur (the default), columns (both solve through the contact dofs,
-//              models/condensed_solve.hpp) or plain (a factorisation per iteration)
+//              models/solvers/condensed_solve.hpp) or plain (a factorisation per iteration)
 //   linear     umfpack, mumps, eigen-lu, with the columns condensation (the Schur one does its sparse
 //              work in MUMPS whatever solver.linear says)
 // and then jointly ("joint": nx 15, 30, 60, 120 x P1, P2 x 50, 200, 800 steps x backward Euler, BDF2;
@@ -57,8 +57,8 @@
 #include <string>
 #include <vector>
 
-#include "models/csv_log.hpp"
-#include "models/scene_runner.hpp"
+#include "models/output/csv_log.hpp"
+#include "models/scene/scene_runner.hpp"
 #include "support/child_process.hpp"
 
 namespace {

@@ -1,10 +1,11 @@
 # install() and an exported CMake package, so that another project can
 #   find_package(piezocontact REQUIRED)
-#   target_link_libraries(app PRIVATE piezocontact::piezocontact)
+#   target_link_libraries(app PRIVATE piezocontact::piezocontact)   # or one layer, e.g. piezocontact::piezocontact_bricks
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS piezocontact piezocontact_warnings EXPORT piezocontactTargets
+install(TARGETS piezocontact piezocontact_assembly piezocontact_bricks piezocontact_models piezocontact_scene
+                piezocontact_warnings EXPORT piezocontactTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

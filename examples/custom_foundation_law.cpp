@@ -30,7 +30,7 @@
 #include "bricks/testing/law_checker.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "models/model.hpp"
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 

@@ -1,5 +1,5 @@
 // The paper's 2D test (section 4), with every brick stacked by hand: the program to copy when a scene
-// needs something the recipe (models/piezo_contact_recipe.hpp) does not offer.
+// needs something the recipe (models/piezo/piezo_contact_recipe.hpp) does not offer.
 //
 // A piezoelectric Kelvin-Voigt strip (0, 0.03) x (0, 0.01) m of PZT-5H, clamped on the left, pressed by
 // the traction (0, -t) N/m on the top, grounded (phi = 0) on the top, and in frictional contact with a
@@ -31,9 +31,9 @@
 #include "bricks/source_bricks.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "models/model.hpp"
-#include "models/newton.hpp"
-#include "models/piezo_fields.hpp"
-#include "models/result_series.hpp"
+#include "models/solvers/newton.hpp"
+#include "models/output/piezo_fields.hpp"
+#include "models/output/result_series.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 
@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
     options.step = 0.2 / 50;
     options.output_every = 10;
     options.prediction = Prediction::Previous;  // start each Newton solve from v_{n-1}
-    NewtonSolver newton;                        // default options: see models/newton.hpp
+    NewtonSolver newton;                        // default options: see models/solvers/newton.hpp
 
     const PointLocator locator(*mesh);
     const double corner[2] = {0.03, 0.01}, centre[2] = {0.015, 0.005};

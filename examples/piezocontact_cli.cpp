@@ -2,7 +2,7 @@
 //   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet]
 //   piezocontact check SCENE [--set key=value ...]
 // `run` validates the whole scene, then runs each foundation it lists and writes the results (see
-// models/scene_runner.hpp) as it goes. `check` only validates. --set overrides any scene value by its
+// models/scene/scene_runner.hpp) as it goes. `check` only validates. --set overrides any scene value by its
 // dotted path: --set contact.c_nu=1e14 --set mesh.nx=120.
 #include <cstdio>
 #include <cstring>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "assembly/error.hpp"
-#include "models/scene_runner.hpp"
+#include "models/scene/scene_runner.hpp"
 
 namespace {
 

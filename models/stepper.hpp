@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {

@@ -38,7 +38,7 @@
 #include "bricks/voigt.hpp"
 #include "bricks/weak_form_brick.hpp"
 #include "models/model.hpp"
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 

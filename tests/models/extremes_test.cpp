@@ -16,7 +16,7 @@
 #include <sstream>
 
 #include "assembly/error.hpp"
-#include "models/scene_runner.hpp"
+#include "models/scene/scene_runner.hpp"
 #include "support/extreme_cases.hpp"
 
 namespace pc::testing {

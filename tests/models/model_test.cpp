@@ -16,7 +16,7 @@
 #include "bricks/source_bricks.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "models/model.hpp"
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 #include "models/time_scheme.hpp"
 #include "support/piezo_material.hpp"
 

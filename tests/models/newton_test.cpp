@@ -11,7 +11,7 @@
 #include "assembly/mesh_generators.hpp"
 #include "bricks/weak_form_brick.hpp"
 #include "models/model.hpp"
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 
 namespace pc {
 namespace {

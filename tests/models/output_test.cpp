@@ -15,11 +15,11 @@
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "bricks/voigt.hpp"
-#include "models/boundary_table.hpp"
-#include "models/csv_log.hpp"
+#include "models/output/boundary_table.hpp"
+#include "models/output/csv_log.hpp"
 #include "models/model.hpp"
-#include "models/piezo_fields.hpp"
-#include "models/result_series.hpp"
+#include "models/output/piezo_fields.hpp"
+#include "models/output/result_series.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {

@@ -12,7 +12,7 @@
 
 #include "assembly/mesh_generators.hpp"
 #include "models/model.hpp"
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 #include "support/piezo_mms.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "models/scene.hpp"
+#include "models/scene/scene.hpp"
 
 namespace pc {
 namespace {

@@ -1,4 +1,4 @@
-#include "models/piezo_fields.hpp"
+#include "models/output/piezo_fields.hpp"
 
 #include <array>
 #include <cmath>

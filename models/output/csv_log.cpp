@@ -1,4 +1,4 @@
-#include "models/csv_log.hpp"
+#include "models/output/csv_log.hpp"
 
 #include <cstdio>
 #include <filesystem>

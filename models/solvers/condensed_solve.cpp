@@ -1,10 +1,10 @@
-#include "models/condensed_solve.hpp"
+#include "models/solvers/condensed_solve.hpp"
 
 #include <chrono>
 
 #include "assembly/error.hpp"
 #include "models/model.hpp"
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 
 namespace pc {
 namespace {

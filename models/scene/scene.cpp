@@ -1,4 +1,4 @@
-#include "models/scene.hpp"
+#include "models/scene/scene.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "models/json.hpp"
+#include "models/scene/json.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,4 +1,4 @@
-#include "models/newton.hpp"
+#include "models/solvers/newton.hpp"
 
 #include <chrono>
 #include <cmath>

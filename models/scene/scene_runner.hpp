@@ -11,7 +11,7 @@
 #include <functional>
 #include <string>
 
-#include "models/scene.hpp"
+#include "models/scene/scene.hpp"
 
 namespace pc {
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "assembly/error.hpp"
-#include "models/scene_runner.hpp"
+#include "models/scene/scene_runner.hpp"
 
 namespace pc {
 namespace {

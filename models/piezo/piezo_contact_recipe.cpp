@@ -1,4 +1,4 @@
-#include "models/piezo_contact_recipe.hpp"
+#include "models/piezo/piezo_contact_recipe.hpp"
 
 #include "assembly/error.hpp"
 #include "bricks/conductive_foundation_brick.hpp"

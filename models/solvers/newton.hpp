@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "assembly/linear_solver.hpp"
-#include "models/condensed_solve.hpp"
+#include "models/solvers/condensed_solve.hpp"
 #include "models/model.hpp"
 
 namespace pc {
@@ -39,7 +39,7 @@ struct NewtonOptions {
   // reference, if the first was smaller) means divergence.
   double divergence_factor = 1e12;
   std::string linear_solver = "umfpack";
-  // Condensed solve (models/condensed_solve.hpp): when only a few dofs carry nonlinear terms (the contact
+  // Condensed solve (models/solvers/condensed_solve.hpp): when only a few dofs carry nonlinear terms (the contact
   // boundary), factorise the linear part once per step size and solve each iteration through a small
   // dense system on the active ones, instead of a new factorisation. Used when the nonlinear dofs are at
   // most this fraction of all; 0 disables it.

@@ -15,7 +15,7 @@
 
 #include "bricks/source_bricks.hpp"
 #include "models/model.hpp"
-#include "models/piezo_fields.hpp"
+#include "models/output/piezo_fields.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {

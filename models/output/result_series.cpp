@@ -1,4 +1,4 @@
-#include "models/result_series.hpp"
+#include "models/output/result_series.hpp"
 
 #include <cmath>
 #include <cstdio>

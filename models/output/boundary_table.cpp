@@ -1,4 +1,4 @@
-#include "models/boundary_table.hpp"
+#include "models/output/boundary_table.hpp"
 
 #include <algorithm>
 #include <numeric>

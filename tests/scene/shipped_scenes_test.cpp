@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "models/scene_runner.hpp"
+#include "models/scene/scene_runner.hpp"
 
 namespace pc {
 namespace {

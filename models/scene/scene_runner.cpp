@@ -1,4 +1,4 @@
-#include "models/scene_runner.hpp"
+#include "models/scene/scene_runner.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,9 +10,9 @@
 #include "assembly/atomic_file.hpp"
 #include "assembly/error.hpp"
 #include "assembly/point_locator.hpp"
-#include "models/boundary_table.hpp"
-#include "models/csv_log.hpp"
-#include "models/result_series.hpp"
+#include "models/output/boundary_table.hpp"
+#include "models/output/csv_log.hpp"
+#include "models/output/result_series.hpp"
 
 namespace pc {
 namespace {

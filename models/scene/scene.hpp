@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "models/json.hpp"
-#include "models/newton.hpp"
-#include "models/piezo_contact_recipe.hpp"
+#include "models/scene/json.hpp"
+#include "models/solvers/newton.hpp"
+#include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/stepper.hpp"
 
 namespace pc {
