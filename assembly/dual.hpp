@@ -74,6 +74,12 @@ template <int N> Dual<N> chain(const Dual<N>& a, double f, double df) {
 }
 }  // namespace dual_detail
 
+// f(a) from its value f and slope df at value_of(a), for any scalar: lets a kernel call a function that
+// is known only by its value and first derivative (a law behind a virtual interface) and still carry
+// exact first derivatives.
+inline double chain_rule(double /*a*/, double f, double /*df*/) { return f; }
+template <int N> Dual<N> chain_rule(const Dual<N>& a, double f, double df) { return dual_detail::chain(a, f, df); }
+
 template <int N> Dual<N> sqrt(const Dual<N>& a) {
   const double s = std::sqrt(a.v);
   return dual_detail::chain(a, s, s > 0 ? 0.5 / s : 0.0);

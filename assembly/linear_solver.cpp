@@ -5,10 +5,6 @@
 
 #include "assembly/error.hpp"
 #include "assembly/solver_base.hpp"
-#include "assembly/solver_cholmod.hpp"
-#include "assembly/solver_eigen_lu.hpp"
-#include "assembly/solver_mumps.hpp"
-#include "assembly/solver_umfpack.hpp"
 
 namespace pc {
 namespace {
@@ -16,16 +12,6 @@ namespace {
 // Round-off leaves a relative residual of at most about 1e-16 times the condition number: this bound only
 // trips on condition numbers beyond ~1e13, where double precision has nothing left to say.
 constexpr double kMaxRelativeResidual = 1e-3;
-
-struct NamedSolver {
-  const char* name;
-  std::unique_ptr<LinearSolver> (*make)();
-};
-
-constexpr NamedSolver kSolvers[] = {{"eigen-lu", make_eigen_lu_solver},
-                                    {"umfpack", make_umfpack_solver},
-                                    {"mumps", make_mumps_solver},
-                                    {"cholmod", make_cholmod_solver}};
 
 // Index of the first NaN or Inf among values[0, count), or -1.
 Eigen::Index first_non_finite(const double* values, Eigen::Index count) {
@@ -108,19 +94,15 @@ Eigen::VectorXd LinearSolver::solve_once(const CsrMatrix& matrix, const Eigen::V
   return solve(b);
 }
 
-std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
-  for (const NamedSolver& solver : kSolvers)
-    if (name == solver.name) return solver.make();
-  std::string known;
-  for (const std::string& known_name : linear_solver_names())
-    known += (known.empty() ? "" : ", ") + known_name;
-  fail("unknown linear solver \"", name, "\"; known solvers: ", known);
+Registry<LinearSolverFactory>& linear_solver_registry() {
+  static Registry<LinearSolverFactory> registry("linear solver", "solver.linear");
+  return registry;
 }
 
-std::vector<std::string> linear_solver_names() {
-  std::vector<std::string> names;
-  for (const NamedSolver& solver : kSolvers) names.emplace_back(solver.name);
-  return names;
+std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
+  return linear_solver_registry().at(name, "linear solver").create();
 }
+
+std::vector<std::string> linear_solver_names() { return linear_solver_registry().names(); }
 
 }  // namespace pc

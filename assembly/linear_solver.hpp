@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "assembly/registry.hpp"
 #include "assembly/sparse.hpp"
 
 namespace pc {
@@ -31,9 +32,12 @@ class LinearSolver {
   Eigen::VectorXd solve_once(const CsrMatrix& matrix, const Eigen::VectorXd& b);
 };
 
-// Known names: "eigen-lu" (Eigen's SparseLU, the reference), "umfpack" (the default), "mumps"
-// (sequential MUMPS), "cholmod" (symmetric positive definite matrices only). Throws on another name,
-// listing these.
+// The solvers a scene can name (solver.linear), each registered in its own file: "eigen-lu" (Eigen's
+// SparseLU, the reference), "umfpack" (the default), "mumps" (sequential MUMPS), "cholmod" (symmetric
+// positive definite matrices only).
+using LinearSolverFactory = std::unique_ptr<LinearSolver> (*)();
+Registry<LinearSolverFactory>& linear_solver_registry();
+// Throws on an unknown name, listing the registered ones.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name = "umfpack");
 std::vector<std::string> linear_solver_names();
 

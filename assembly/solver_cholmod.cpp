@@ -121,3 +121,5 @@ class CholmodSolver final : public SolverBase {
 std::unique_ptr<LinearSolver> make_cholmod_solver() { return std::make_unique<CholmodSolver>(); }
 
 }  // namespace pc
+
+PC_REGISTER(pc::linear_solver_registry(), {"cholmod", "SuiteSparse CHOLMOD: symmetric positive definite matrices only", {}, pc::make_cholmod_solver})

@@ -36,3 +36,5 @@ class EigenLuSolver final : public SolverBase {
 std::unique_ptr<LinearSolver> make_eigen_lu_solver() { return std::make_unique<EigenLuSolver>(); }
 
 }  // namespace pc
+
+PC_REGISTER(pc::linear_solver_registry(), {"eigen-lu", "Eigen's SparseLU: the reference, slowest", {}, pc::make_eigen_lu_solver})

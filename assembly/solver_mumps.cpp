@@ -41,3 +41,5 @@ class MumpsSolver final : public SolverBase {
 std::unique_ptr<LinearSolver> make_mumps_solver() { return std::make_unique<MumpsSolver>(); }
 
 }  // namespace pc
+
+PC_REGISTER(pc::linear_solver_registry(), {"mumps", "MUMPS, sequential, with its own ordering", {}, pc::make_mumps_solver})

@@ -84,3 +84,5 @@ class UmfpackSolver final : public SolverBase {
 std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<UmfpackSolver>(); }
 
 }  // namespace pc
+
+PC_REGISTER(pc::linear_solver_registry(), {"umfpack", "SuiteSparse UMFPACK with AMD ordering (the default for full factorisations)", {}, pc::make_umfpack_solver})

@@ -1,10 +1,7 @@
 #pragma once
 // Kinematics on the contact surface, shared by the contact bricks: the split of a vector r against the
-// body's outward unit normal n into r_nu = r . n and r_tau = r - r_nu n, the field a normal law reads, and
-// the contact pressure p_nu it gives there.
+// body's outward unit normal n into r_nu = r . n and r_tau = r - r_nu n.
 #include <string>
-
-#include "bricks/laws/law_traits.hpp"
 
 namespace pc {
 
@@ -26,18 +23,6 @@ template <class S>
 void tangential_part(const S* r, const double* n, int dim, S* out) {
   const S r_nu = normal_part(r, n, dim);
   for (int d = 0; d < dim; ++d) out[d] = r[d] - r_nu * n[d];
-}
-
-// The field a normal law reads: the displacement for compliance laws, else the velocity.
-template <class NormalLaw>
-const std::string& normal_law_field(const ContactFields& names) {
-  return law_uses_displacement<NormalLaw> ? names.displacement : names.velocity;
-}
-
-// p_nu at a point, from the value of the field the normal law reads.
-template <class NormalLaw, class S>
-S contact_pressure(const NormalLaw& law, const S* argument, const double* n, int dim) {
-  return law(normal_part(argument, n, dim));
 }
 
 }  // namespace pc

@@ -1,22 +1,27 @@
 #pragma once
-// Contact status for the Newton report: how many nodes of the contact surface are pressed onto the
-// foundation (p_nu > 0) and, of those, how many slide (|v_tau| > a threshold) or stick. Evaluated on the
-// nodal values of the fields (dofs of a Lagrange space are point values), against a given outward normal,
-// so it is exact for a flat contact surface such as the paper's and costs one pass over the region's dofs.
-//
-//   model.add_diagnostic("contact nodes", [&](const Model& m) {
-//     return contact_status(law, m.space("v"), "contact", m.values("v"), m.values("v"), {0, -1, 0}, 1e-8).in_contact;
-//   });
+// The contact surface at its Lagrange nodes, and its status for the Newton report and the output: how
+// many nodes are pressed onto the foundation (p_nu > 0) and, of those, how many slide (|v_tau| above a
+// threshold) or stick. Fields are read at the nodes' own dof values (exact: a clamped node reads exact
+// zeros) and split against each node's normal, the mean of the outward normals of the surface's faces
+// around it, so a curved contact surface from gmsh is split along its own normal at every node.
 #include <array>
-#include <cmath>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "assembly/fe_space.hpp"
-#include "bricks/contact_kinematics.hpp"
+#include "bricks/normal_pressure.hpp"
 
 namespace pc {
+
+struct ContactNodes {
+  std::vector<int> scalar_dofs;                // sorted, of the space the nodes were taken from
+  std::vector<std::array<double, 3>> normals;  // unit, one per node
+};
+
+// The space's nodes on a face region with their normals.
+ContactNodes contact_nodes(const FESpace& space, const std::string& face_region);
 
 struct ContactStatus {
   int nodes = 0;       // nodes of the region
@@ -25,29 +30,14 @@ struct ContactStatus {
   int sticking() const { return in_contact - sliding; }
 };
 
-// argument: values of the field the normal law reads (velocity, or displacement for a compliance law);
-// velocity: values of the velocity. Both in `space`'s numbering.
-template <class NormalLaw>
-ContactStatus contact_status(const NormalLaw& law, const FESpace& space, const std::string& region,
-                             const Eigen::VectorXd& argument, const Eigen::VectorXd& velocity,
-                             const std::array<double, 3>& normal, double slip_threshold) {
-  const int dim = space.num_components();
-  ContactStatus status;
-  for (const int node : space.scalar_dofs_on(region)) {
-    ++status.nodes;
-    double r[3] = {}, v[3] = {}, v_tau[3] = {};
-    for (int d = 0; d < dim; ++d) {
-      r[d] = argument[space.dof(node, d)];
-      v[d] = velocity[space.dof(node, d)];
-    }
-    if (!(contact_pressure(law, r, normal.data(), dim) > 0)) continue;
-    ++status.in_contact;
-    tangential_part(v, normal.data(), dim, v_tau);
-    double slip2 = 0;
-    for (int d = 0; d < dim; ++d) slip2 += v_tau[d] * v_tau[d];
-    if (std::sqrt(slip2) > slip_threshold) ++status.sliding;
-  }
-  return status;
-}
+// Contact pressure p_nu at each node, from the values of the field the normal law reads (velocity, or
+// displacement for a compliance law), in the nodes' space numbering.
+std::vector<double> nodal_contact_pressure(const NormalPressure& normal, const FESpace& space,
+                                           const ContactNodes& nodes, const Eigen::VectorXd& argument);
+// |v_tau| at each node.
+std::vector<double> nodal_slip_speed(const FESpace& space, const ContactNodes& nodes, const Eigen::VectorXd& velocity);
+
+ContactStatus contact_status(const NormalPressure& normal, const FESpace& space, const ContactNodes& nodes,
+                             const Eigen::VectorXd& argument, const Eigen::VectorXd& velocity, double slip_threshold);
 
 }  // namespace pc

@@ -1,15 +1,20 @@
 // The command-line runner (installed as `piezocontact`):
 //   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet]
 //   piezocontact check SCENE [--set key=value ...]
+//   piezocontact list
+//   piezocontact describe [NAME] [--markdown]
 // `run` validates the whole scene, then runs each foundation it lists and writes the results (see
-// models/scene/scene_runner.hpp) as it goes. `check` only validates. --set overrides any scene value by its
-// dotted path: --set contact.c_nu=1e14 --set mesh.nx=120.
+// models/scene/scene_runner.hpp) as it goes. `check` validates and builds every foundation's model
+// without running it, so it refuses whatever `run` would refuse before its first step. --set overrides
+// any scene value by its dotted path: --set contact.c_nu=1e14 --set mesh.nx=120. `list` and `describe`
+// print what a scene can name (laws, time schemes, solvers) with every parameter, from the registries.
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "assembly/error.hpp"
+#include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_runner.hpp"
 
 namespace {
@@ -17,13 +22,47 @@ namespace {
 int usage() {
   std::fprintf(stderr,
                "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet]\n"
-               "       piezocontact check SCENE [--set key=value ...]\n");
+               "       piezocontact check SCENE [--set key=value ...]\n"
+               "       piezocontact list\n"
+               "       piezocontact describe [NAME] [--markdown]\n");
   return 2;
 }
 
 }  // namespace
 
+// `list` and `describe`: what the registries hold.
+int catalog(const std::string& command, int argc, char** argv) {
+  const auto sections = pc::registry_catalog();
+  if (command == "list") {
+    if (argc != 2) return usage();
+    std::fputs(pc::catalog_list(sections).c_str(), stdout);
+    return 0;
+  }
+  std::string name;
+  bool markdown = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--markdown") markdown = true;
+    else if (name.empty() && arg.rfind("--", 0) != 0) name = arg;
+    else return usage();
+  }
+  if (markdown) {
+    if (!name.empty()) return usage();
+    std::fputs(pc::catalog_markdown(sections).c_str(), stdout);
+    return 0;
+  }
+  const std::string text = pc::catalog_describe(sections, name);
+  if (text.empty()) {
+    std::fprintf(stderr, "error: nothing registered is called '%s' (see: piezocontact list)\n", name.c_str());
+    return 1;
+  }
+  std::fputs(text.c_str(), stdout);
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc >= 2 && (std::string(argv[1]) == "list" || std::string(argv[1]) == "describe"))
+    return catalog(argv[1], argc, argv);
   if (argc < 3) return usage();
   const std::string command = argv[1];
   if (command != "run" && command != "check") return usage();
@@ -53,6 +92,8 @@ int main(int argc, char** argv) {
   try {
     const pc::Scene scene = pc::load_scene_file(scene_path, overrides);
     if (command == "check") {
+      // Building each foundation's model runs every check the run would make before its first step.
+      for (const pc::SceneFoundation& f : scene.foundations) pc::FoundationRun(scene, f);
       std::printf("scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s\n", scene.name.c_str(),
                   scene.mesh_description.c_str(), scene.foundations.size(), scene.steps, scene.end_time);
       return 0;

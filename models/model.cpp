@@ -175,12 +175,21 @@ void Model::set_values(const std::string& name, const Eigen::VectorXd& values) {
 void Model::set_constant(const std::string& name, Eigen::MatrixXd value) {
   require(value.size() > 0, "Model: constant '", name, "' is empty");
   require(value.allFinite(), "Model: constant '", name, "' has non-finite entries");
+  // An unchanged value invalidates nothing.
+  const auto it = constants_.find(name);
+  if (it != constants_.end() && it->second.first.rows() == value.rows() && it->second.first.cols() == value.cols() &&
+      it->second.first == value)
+    return;
   constants_[name] = {std::move(value), ++clock_};
 }
 
 void Model::set_constant(const std::string& name, double value) {
   require(std::isfinite(value), "Model: constant '", name, "' is not finite: ", value);
   set_constant(name, Eigen::MatrixXd::Constant(1, 1, value));
+}
+
+void Model::set_constants(const ParameterValues& values) {
+  for (const auto& [name, value] : values) set_constant(name, value);
 }
 
 const Eigen::MatrixXd& Model::constant(const std::string& name) const {

@@ -22,6 +22,7 @@
 #include <Eigen/Core>
 
 #include "assembly/dof_layout.hpp"
+#include "assembly/parameters.hpp"
 #include "assembly/fe_space.hpp"
 #include "assembly/system_matrix.hpp"
 #include "assembly/term_assembly.hpp"
@@ -65,6 +66,8 @@ class Model : public DataView {
   // ---- constants --------------------------------------------------------------------------------
   void set_constant(const std::string& name, Eigen::MatrixXd value);
   void set_constant(const std::string& name, double value);
+  // Scalar constants by name, e.g. a law's parameters: set_constants(law_values(LinearDampedResponse{1e12})).
+  void set_constants(const ParameterValues& values);
   bool has_constant(const std::string& name) const { return constants_.count(name) > 0; }
   const Eigen::MatrixXd& constant(const std::string& name) const override;
 

@@ -207,11 +207,33 @@ void ThetaScheme::freeze_displacement(Model& model) {
 
 // ---- by name ----------------------------------------------------------------------------------------
 
-std::unique_ptr<TimeScheme> make_time_scheme(const TimeSchemeSpec& spec, KinematicFields fields) {
-  if (spec.type == "backward_euler") return std::make_unique<BackwardEuler>(std::move(fields));
-  if (spec.type == "bdf2") return std::make_unique<BDF2>(std::move(fields));
-  if (spec.type == "theta") return std::make_unique<ThetaScheme>(spec.theta, std::move(fields));
-  fail("time.scheme: unknown scheme '", spec.type, "' (known: backward_euler, bdf2, theta)");
+Registry<TimeSchemeFactory>& time_scheme_registry() {
+  static Registry<TimeSchemeFactory> registry("time scheme", "time.scheme");
+  return registry;
+}
+
+std::unique_ptr<TimeScheme> make_time_scheme(const Choice& choice, KinematicFields fields) {
+  const auto& entry = time_scheme_registry().at(choice.name, "time.scheme");
+  return entry.create(checked_values(entry.parameters, choice.parameters, "time scheme '" + choice.name + "'"),
+                      std::move(fields));
 }
 
 }  // namespace pc
+
+PC_REGISTER(pc::time_scheme_registry(),
+            {"backward_euler", "u_n = u_{n-1} + k v_n: first order, strongly damping (the paper's)", {},
+             [](const pc::ParameterValues&, pc::KinematicFields f) {
+               return std::unique_ptr<pc::TimeScheme>(std::make_unique<pc::BackwardEuler>(std::move(f)));
+             }})
+PC_REGISTER(pc::time_scheme_registry(),
+            {"bdf2", "variable-step BDF2: second order, L-stable (first step backward Euler)", {},
+             [](const pc::ParameterValues&, pc::KinematicFields f) {
+               return std::unique_ptr<pc::TimeScheme>(std::make_unique<pc::BDF2>(std::move(f)));
+             }})
+PC_REGISTER(pc::time_scheme_registry(),
+            {"theta",
+             "theta method: second order at theta = 1/2 (Crank-Nicolson), first order and damping above",
+             {{"theta", "1", "implicitness: 1/2 Crank-Nicolson, 1 backward Euler", 0.5, pc::Range::left_open(0, 1)}},
+             [](const pc::ParameterValues& p, pc::KinematicFields f) {
+               return std::unique_ptr<pc::TimeScheme>(std::make_unique<pc::ThetaScheme>(p.at("theta"), std::move(f)));
+             }})

@@ -22,9 +22,11 @@
 // steps: within 2e-4 of backward Euler). Crank-Nicolson does not damp the stiff modes of the contact
 // dampers: its relative error (3e-5 at 20 steps, 1e-4 at 160) does not decrease with k there, and Newton
 // needs ~3 iterations a step instead of ~1.3.
+#include <functional>
 #include <memory>
 #include <string>
 
+#include "assembly/registry.hpp"
 #include "models/model.hpp"
 
 namespace pc {
@@ -150,13 +152,13 @@ class ThetaScheme : public TimeScheme {
   bool euler_step_ = false;
 };
 
-// A scheme by name, as scenes and recipes give it.
-struct TimeSchemeSpec {
-  std::string type = "backward_euler";  // backward_euler | bdf2 | theta
-  double theta = 0.5;                   // theta only: (0, 1]; 1/2 is Crank-Nicolson
-};
+// The schemes a scene can name (time.scheme, parameters in time): backward_euler (the paper's), bdf2,
+// theta (with theta).
+using TimeSchemeFactory = std::function<std::unique_ptr<TimeScheme>(const ParameterValues&, KinematicFields)>;
+Registry<TimeSchemeFactory>& time_scheme_registry();
 
-// Throws pc::Error naming the known schemes, or the valid range of theta.
-std::unique_ptr<TimeScheme> make_time_scheme(const TimeSchemeSpec& spec, KinematicFields fields = {});
+// A scheme by name ({"theta", {{"theta", 0.5}}}); throws pc::Error naming the known schemes, or the
+// parameter out of its range.
+std::unique_ptr<TimeScheme> make_time_scheme(const Choice& choice = {"backward_euler", {}}, KinematicFields fields = {});
 
 }  // namespace pc

@@ -5,7 +5,7 @@
 //   template <class S> S operator()(const S& phi, const S& pressure) const;
 // Such a law is dissipative when it is monotone in phi: (D(phi1) - D(phi2)) (phi1 - phi2) >= 0, the
 // electric analogue of p(r) . r >= 0.
-#include <string>
+#include <array>
 
 #include "assembly/dual.hpp"
 #include "bricks/laws/law_parameters.hpp"
@@ -22,30 +22,39 @@ struct LinearConductance {
   static constexpr bool dissipative = true;
   static constexpr bool uses_normal_pressure = false;
 
+  static constexpr auto parameters() {
+    return std::array{law_parameter("k_e", &LinearConductance::k_e, "S/m^2",
+                                    "conductance: D.n = k_e (phi - phi_f)", Range::at_least(0), Required::yes),
+                      law_parameter("phi_f", &LinearConductance::phi_f, "V", "potential of the foundation",
+                                    Range::any(), Required::yes)};
+  }
   template <class S>
   S operator()(const S& phi, const S& /*pressure*/) const {
     return k_e * (phi - phi_f);
-  }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "LinearConductance", "k_e", k_e, 0);
-    require_finite_parameter(brick, "LinearConductance", "phi_f", phi_f);
   }
 };
 
 // D.n = k_e s(p) (phi - phi_f) with s(p) = p_+^2 / (p_+^2 + p_ref^2): charge flows only where the body
 // presses on the foundation, switching on smoothly over pressures of order p_ref. The pressure comes
-// from the normal law `normal` this law holds, which couples phi to the velocity (or displacement).
-template <class NormalLaw = LinearDampedResponse>
+// from the normal brick the foundation brick is paired with, which couples phi to the velocity (or
+// displacement).
 struct PressureActivatedConductance {
   double k_e = 0;
   double phi_f = 0;
   double p_ref = 1;
-  NormalLaw normal{};
 
   static constexpr bool affine = false;
   static constexpr bool dissipative = true;
   static constexpr bool uses_normal_pressure = true;
 
+  static constexpr auto parameters() {
+    return std::array{law_parameter("k_e", &PressureActivatedConductance::k_e, "S/m^2",
+                                    "conductance at full contact", Range::at_least(0), Required::yes),
+                      law_parameter("phi_f", &PressureActivatedConductance::phi_f, "V", "potential of the foundation",
+                                    Range::any(), Required::yes),
+                      law_parameter("p_ref", &PressureActivatedConductance::p_ref, "Pa",
+                                    "pressure over which conduction switches on", Range::positive(), Required::yes)};
+  }
   template <class S>
   S operator()(const S& phi, const S& pressure) const {
     return k_e * activation(pressure) * (phi - phi_f);
@@ -57,12 +66,6 @@ struct PressureActivatedConductance {
     if (x <= 1.0) return x * x / (1.0 + x * x);
     const S inverse = 1.0 / x;
     return 1.0 / (1.0 + inverse * inverse);
-  }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "PressureActivatedConductance", "k_e", k_e, 0);
-    require_finite_parameter(brick, "PressureActivatedConductance", "phi_f", phi_f);
-    require_positive_parameter(brick, "PressureActivatedConductance", "p_ref", p_ref);
-    validate_law(normal, brick);
   }
 };
 

@@ -5,8 +5,8 @@
 //   template <class S> void operator()(const S* r, int dim, const S& normal_pressure, S* out) const;
 // templated on the scalar so that Dual gives the derivatives in r and in the pressure.
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <string>
 
 #include "assembly/dual.hpp"
 #include "bricks/laws/law_parameters.hpp"
@@ -36,12 +36,13 @@ struct ViscousFriction {
   static constexpr bool symmetric = true;
   static constexpr bool uses_normal_pressure = false;
 
+  static constexpr auto parameters() {
+    return std::array{law_parameter("c_tau", &ViscousFriction::c_tau, "Pa s/m",
+                                    "friction coefficient: p_tau = c_tau v_tau", Range::at_least(0), Required::yes)};
+  }
   template <class S>
   void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
     for (int i = 0; i < dim; ++i) out[i] = c_tau * r[i];
-  }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "ViscousFriction", "c_tau", c_tau, 0);
   }
 };
 
@@ -56,16 +57,19 @@ struct RegularizedCoulomb {
   static constexpr bool symmetric = true;  // in r; the pressure coupling is not, and the brick knows it
   static constexpr bool uses_normal_pressure = true;
 
+  static constexpr auto parameters() {
+    return std::array{
+        law_parameter("mu", &RegularizedCoulomb::mu, "1", "friction coefficient: slip threshold mu |p_nu|",
+                      Range::at_least(0), Required::yes),
+        law_parameter("eps", &RegularizedCoulomb::eps, "m/s", "regularisation: slip velocity of the smoothing",
+                      Range::positive(), Required::yes)};
+  }
   template <class S>
   void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
     // |p_nu| with the right-sided derivative at 0, like the normal laws that produce it.
     const S threshold = mu * (normal_pressure < 0.0 ? -normal_pressure : normal_pressure);
     regularized_direction(r, dim, eps, out);
     for (int i = 0; i < dim; ++i) out[i] *= threshold;
-  }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "RegularizedCoulomb", "mu", mu, 0);
-    require_positive_parameter(brick, "RegularizedCoulomb", "eps", eps);
   }
 };
 
@@ -79,14 +83,15 @@ struct RegularizedTresca {
   static constexpr bool symmetric = true;
   static constexpr bool uses_normal_pressure = false;
 
+  static constexpr auto parameters() {
+    return std::array{law_parameter("g", &RegularizedTresca::g, "Pa", "slip bound", Range::at_least(0), Required::yes),
+                      law_parameter("eps", &RegularizedTresca::eps, "m/s",
+                                    "regularisation: slip velocity of the smoothing", Range::positive(), Required::yes)};
+  }
   template <class S>
   void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
     regularized_direction(r, dim, eps, out);
     for (int i = 0; i < dim; ++i) out[i] *= g;
-  }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "RegularizedTresca", "g", g, 0);
-    require_positive_parameter(brick, "RegularizedTresca", "eps", eps);
   }
 };
 

@@ -1,36 +1,67 @@
 #pragma once
-// Checks of law parameters, run by a brick when it is built: each throws pc::Error naming the brick, the
-// law, the parameter and its value, so a bad input file is fixed without opening the source.
-#include <cmath>
+// How a law declares its parameters: a static parameters() listing, per parameter, its name, the member
+// it sets, its unit, one line of documentation, the range of valid values and whether it has a default
+// (the member's initial value) or is required. That one declaration is what the registry documents, the
+// scene reader checks and the bricks read from the model's constants:
+//
+//   struct LinearDampedResponse {
+//     double c_nu = 0;
+//     static constexpr auto parameters() {
+//       return std::array{law_parameter("c_nu", &LinearDampedResponse::c_nu, "Pa s/m",
+//                                       "damping coefficient", Range::at_least(0), Required::yes)};
+//     }
+//     ...
+//   };
+//
+// A law that declares none (a user's quick law) holds fixed values and its brick reads no model data.
 #include <string>
+#include <vector>
 
-#include "assembly/error.hpp"
+#include "assembly/parameters.hpp"
 
 namespace pc {
 
-inline void require_finite_parameter(const std::string& brick, const char* law, const char* parameter, double value) {
-  require(std::isfinite(value), "brick '", brick, "': ", law, " parameter ", parameter, " = ", value,
-          " must be finite");
-}
+enum class Required { no, yes };
 
-// value finite and value >= lower.
-inline void require_parameter_at_least(const std::string& brick, const char* law, const char* parameter, double value,
-                                       double lower) {
-  require(std::isfinite(value) && value >= lower, "brick '", brick, "': ", law, " parameter ", parameter, " = ",
-          value, " must be finite and >= ", lower);
-}
-
-// value finite and value > 0.
-inline void require_positive_parameter(const std::string& brick, const char* law, const char* parameter,
-                                       double value) {
-  require(std::isfinite(value) && value > 0, "brick '", brick, "': ", law, " parameter ", parameter, " = ", value,
-          " must be finite and > 0");
-}
-
-// Runs law.validate(brick) if the law has one (a user's law may not).
 template <class Law>
-void validate_law(const Law& law, const std::string& brick) {
-  if constexpr (requires { law.validate(brick); }) law.validate(brick);
+struct LawParameter {
+  const char* name;
+  double Law::*member;
+  const char* unit;
+  const char* doc;
+  Range range;
+  Required required;
+};
+
+template <class Law>
+constexpr LawParameter<Law> law_parameter(const char* name, double Law::*member, const char* unit, const char* doc,
+                                          Range range, Required required = Required::no) {
+  return {name, member, unit, doc, range, required};
+}
+
+template <class Law>
+concept DeclaresParameters = requires { Law::parameters(); };
+
+// The declarations, with defaults taken from a default-constructed law.
+template <DeclaresParameters Law>
+std::vector<ParameterDeclaration> parameter_declarations() {
+  std::vector<ParameterDeclaration> out;
+  const Law defaults{};
+  for (const LawParameter<Law>& p : Law::parameters()) {
+    ParameterDeclaration d{p.name, p.unit, p.doc, {}, p.range};
+    if (p.required == Required::no) d.default_value = defaults.*(p.member);
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+// The law's parameter values by name, e.g. {{"c_nu", 1e12}}: what a driver writes into the model's
+// constants (Model::set_constants(law_values(LinearDampedResponse{1e12}))).
+template <DeclaresParameters Law>
+ParameterValues law_values(const Law& law) {
+  ParameterValues out;
+  for (const LawParameter<Law>& p : Law::parameters()) out[p.name] = law.*(p.member);
+  return out;
 }
 
 }  // namespace pc

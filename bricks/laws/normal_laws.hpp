@@ -5,8 +5,8 @@
 //
 // The value is templated on the scalar so that Dual gives the derivative. At the kink the derivative is
 // the right-sided one: a Newton step from a body at rest on the foundation sees the foundation's stiffness.
+#include <array>
 #include <cmath>
-#include <string>
 
 #include "assembly/dual.hpp"
 #include "bricks/laws/law_parameters.hpp"
@@ -27,12 +27,13 @@ struct LinearDampedResponse {
   static constexpr bool dissipative = true;
   static constexpr bool uses_displacement = false;
 
+  static constexpr auto parameters() {
+    return std::array{law_parameter("c_nu", &LinearDampedResponse::c_nu, "Pa s/m",
+                                    "damping coefficient: p_nu = c_nu max(v_nu, 0)", Range::at_least(0), Required::yes)};
+  }
   template <class S>
   S operator()(const S& r) const {
     return c_nu * positive_part(r);
-  }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "LinearDampedResponse", "c_nu", c_nu, 0);
   }
 };
 
@@ -45,21 +46,22 @@ struct PowerDampedResponse {
   static constexpr bool dissipative = true;
   static constexpr bool uses_displacement = false;
 
+  static constexpr auto parameters() {
+    return std::array{law_parameter("c_nu", &PowerDampedResponse::c_nu, "Pa (s/m)^m",
+                                    "damping coefficient: p_nu = c_nu max(v_nu, 0)^m", Range::at_least(0), Required::yes),
+                      law_parameter("m", &PowerDampedResponse::m, "1", "exponent", Range::at_least(1))};
+  }
   template <class S>
   S operator()(const S& r) const {
     using std::pow;
     return r < 0.0 ? S(0.0) : c_nu * pow(r, m);
   }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "PowerDampedResponse", "c_nu", c_nu, 0);
-    require_parameter_at_least(brick, "PowerDampedResponse", "m", m, 1);
-  }
 };
 
-// p_nu(u_nu) = c (u_nu - gap)_+^m: a deformable foundation that resists penetration beyond the initial
+// p_nu(u_nu) = c_nu (u_nu - gap)_+^m: a deformable foundation that resists penetration beyond the initial
 // gap. Elastic, not damped: it stores energy, so it is not declared dissipative.
 struct NormalCompliance {
-  double c = 0;
+  double c_nu = 0;
   double m = 1;
   double gap = 0;
 
@@ -67,16 +69,17 @@ struct NormalCompliance {
   static constexpr bool dissipative = false;
   static constexpr bool uses_displacement = true;
 
+  static constexpr auto parameters() {
+    return std::array{law_parameter("c_nu", &NormalCompliance::c_nu, "Pa/m^m",
+                                    "stiffness: p_nu = c_nu max(u_nu - gap, 0)^m", Range::at_least(0), Required::yes),
+                      law_parameter("m", &NormalCompliance::m, "1", "exponent", Range::at_least(1)),
+                      law_parameter("gap", &NormalCompliance::gap, "m", "initial gap to the foundation", Range::any())};
+  }
   template <class S>
   S operator()(const S& u_nu) const {
     using std::pow;
     const S penetration = u_nu - gap;
-    return penetration < 0.0 ? S(0.0) : c * pow(penetration, m);
-  }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "NormalCompliance", "c", c, 0);
-    require_parameter_at_least(brick, "NormalCompliance", "m", m, 1);
-    require_finite_parameter(brick, "NormalCompliance", "gap", gap);
+    return penetration < 0.0 ? S(0.0) : c_nu * pow(penetration, m);
   }
 };
 

@@ -1,16 +1,10 @@
 #include "models/piezo/piezo_contact_recipe.hpp"
 
 #include "assembly/error.hpp"
-#include "bricks/conductive_foundation_brick.hpp"
-#include "bricks/contact_status.hpp"
 #include "bricks/dirichlet_brick.hpp"
 #include "bricks/elasticity_brick.hpp"
-#include "bricks/friction_brick.hpp"
 #include "bricks/inertia_brick.hpp"
-#include "bricks/laws/foundation_laws.hpp"
-#include "bricks/laws/friction_laws.hpp"
-#include "bricks/laws/normal_laws.hpp"
-#include "bricks/normal_response_brick.hpp"
+#include "bricks/law_registry.hpp"
 #include "bricks/permittivity_brick.hpp"
 #include "bricks/piezoelectric_brick.hpp"
 #include "bricks/viscosity_brick.hpp"
@@ -18,42 +12,12 @@
 namespace pc {
 namespace {
 
-// Calls f with the normal law the spec names (the bricks are templates over laws).
-template <class F>
-void with_normal_law(const NormalLawSpec& s, F&& f) {
-  if (s.type == "linear_damped") return f(LinearDampedResponse{s.c_nu});
-  if (s.type == "power_damped") return f(PowerDampedResponse{s.c_nu, s.m});
-  if (s.type == "normal_compliance") return f(NormalCompliance{s.c_nu, s.m, s.gap});
-  fail("contact.law_normal: unknown law '", s.type, "' (known: linear_damped, power_damped, normal_compliance)");
-}
-
-template <class Normal>
-void add_friction(Model& model, const FrictionLawSpec& s, const Normal& normal, const std::string& region) {
-  if (s.type == "none") return;
-  if (s.type == "viscous") {
-    model.add_brick(std::make_shared<FrictionBrick<ViscousFriction>>(ViscousFriction{s.c_tau}, region));
-  } else if (s.type == "coulomb") {
-    model.add_brick(std::make_shared<FrictionBrick<RegularizedCoulomb, Normal>>(RegularizedCoulomb{s.mu, s.eps}, normal,
-                                                                                region));
-  } else if (s.type == "tresca") {
-    model.add_brick(std::make_shared<FrictionBrick<RegularizedTresca>>(RegularizedTresca{s.g, s.eps}, region));
-  } else {
-    fail("contact.law_tangential: unknown law '", s.type, "' (known: none, viscous, coulomb, tresca)");
-  }
-}
-
-template <class Normal>
-void add_foundation(Model& model, const FoundationSpec& s, const Normal& normal, const std::string& region) {
-  if (s.type == "insulated") return;
-  if (s.type == "conductive") {
-    model.add_brick(
-        std::make_shared<ConductiveFoundationBrick<LinearConductance>>(LinearConductance{s.k_e, s.phi_f}, region));
-  } else if (s.type == "pressure_activated") {
-    using Law = PressureActivatedConductance<Normal>;
-    model.add_brick(std::make_shared<ConductiveFoundationBrick<Law>>(Law{s.k_e, s.phi_f, s.p_ref, normal}, region));
-  } else {
-    fail("foundation: unknown type '", s.type, "' (known: insulated, conductive, pressure_activated)");
-  }
+// The entry a choice names, its parameters checked and written into the model's constants.
+template <class Factory>
+const typename Registry<Factory>::Entry& choose(Model& model, const Registry<Factory>& registry, const Choice& choice) {
+  const auto& entry = registry.at(choice.name, registry.key());
+  model.set_constants(checked_values(entry.parameters, choice.parameters, message(registry.key(), " '", choice.name, "'")));
+  return entry;
 }
 
 }  // namespace
@@ -116,31 +80,25 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
   if (!spec.contact.empty()) {
     require(spec.mesh->has_region(spec.contact) && spec.mesh->region_kind(spec.contact) == RegionKind::Faces,
             "regions.contact: '", spec.contact, "' is not a face region of the mesh");
-    const FaceRef first = spec.mesh->face_region(spec.contact).front();
-    built.contact_normal = spec.mesh->face_normal(first);
-    with_normal_law(spec.normal, [&](auto law) {
-      using Law = decltype(law);
-      m.add_brick(std::make_shared<NormalResponseBrick<Law>>(law, spec.contact));
-      add_friction(m, spec.friction, law, spec.contact);
-      if (electric) add_foundation(m, spec.foundation, law, spec.contact);
-      built.contact_argument = law_uses_displacement<Law> ? "u" : "v";
-      built.contact_pressure = [law](const double* argument, const double* normal, int d) {
-        return contact_pressure(law, argument, normal, d);
-      };
-      const std::array<double, 3> normal = built.contact_normal;
-      const std::string argument = built.contact_argument, region = spec.contact;
-      const double threshold = spec.slip_threshold;
-      m.add_diagnostic("contact_nodes_in_compression", [=](const Model& model) {
-        return double(contact_status(law, model.space("v"), region, model.values(argument), model.values("v"),
-                                     normal, threshold).in_contact);
-      });
-      m.add_diagnostic("contact_nodes_in_slip", [=](const Model& model) {
-        return double(contact_status(law, model.space("v"), region, model.values(argument), model.values("v"),
-                                     normal, threshold).sliding);
-      });
-    });
+    const ContactSurface surface{spec.contact, {}, {}};
+    const auto normal = choose(m, normal_law_registry(), spec.normal).create(surface);
+    m.add_brick(normal);
+    if (auto friction = choose(m, friction_law_registry(), spec.friction).create(surface, normal)) m.add_brick(friction);
+    if (electric)
+      if (auto foundation = choose(m, foundation_law_registry(), spec.foundation).create(surface, normal))
+        m.add_brick(foundation);
+    built.normal = normal;
+    built.contact_argument = normal->argument_field(surface.fields);
+    built.contact_nodes = contact_nodes(m.space("v"), spec.contact);
+    const std::string argument = built.contact_argument;
+    const double threshold = spec.slip_threshold;
+    auto status = [normal, nodes = built.contact_nodes, argument, threshold](const Model& model) {
+      return contact_status(*normal, model.space("v"), nodes, model.values(argument), model.values("v"), threshold);
+    };
+    m.add_diagnostic("contact_nodes_in_compression", [=](const Model& model) { return double(status(model).in_contact); });
+    m.add_diagnostic("contact_nodes_in_slip", [=](const Model& model) { return double(status(model).sliding); });
   } else {
-    require(spec.foundation.type == "insulated", "foundation '", spec.foundation.type,
+    require(spec.foundation.name == "insulated", "foundation '", spec.foundation.name,
             "' needs a contact region (regions.contact)");
   }
   if (spec.extra_bricks) spec.extra_bricks(m);

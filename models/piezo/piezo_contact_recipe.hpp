@@ -6,6 +6,9 @@
 //   A empty or zero      -> no viscosity brick;
 //   no contact region    -> no contact bricks; friction "none" -> no friction brick;
 //   foundation "insulated" (or no potential) -> no foundation brick (D.nu = 0 on the contact boundary).
+// The contact laws are chosen by their registered names (bricks/law_registry.hpp) and their parameters
+// become model constants (c_nu, c_tau, k_e, phi_f, ...): change one with Model::set_constant and only the
+// bricks that read it are rebuilt.
 #include <functional>
 #include <memory>
 #include <string>
@@ -13,30 +16,15 @@
 
 #include <Eigen/Core>
 
+#include "assembly/parameters.hpp"
+#include "bricks/contact_status.hpp"
+#include "bricks/normal_pressure.hpp"
 #include "bricks/source_bricks.hpp"
 #include "models/model.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {
-
-struct NormalLawSpec {
-  std::string type = "linear_damped";  // linear_damped: c_nu max(r,0); power_damped: c_nu max(r,0)^m;
-                                       // normal_compliance: c_nu max(u_nu - gap, 0)^m (displacement)
-  double c_nu = 0, m = 1, gap = 0;
-};
-
-struct FrictionLawSpec {
-  std::string type = "viscous";  // none | viscous: c_tau v_tau | coulomb: mu |sigma_nu| v_tau / sqrt(|v_tau|^2 + eps^2)
-                                 // | tresca: g v_tau / sqrt(|v_tau|^2 + eps^2)
-  double c_tau = 0, mu = 0, g = 0, eps = 1e-9;
-};
-
-struct FoundationSpec {
-  std::string type = "insulated";  // insulated | conductive: k_e (phi - phi_f) |
-                                   // pressure_activated: k_e s(p) (phi - phi_f), s(p) = p+^2 / (p+^2 + p_ref^2)
-  double k_e = 0, phi_f = 0, p_ref = 1;
-};
 
 struct SurfaceLoad {
   std::string region;
@@ -57,11 +45,13 @@ struct PiezoContactSpec {
   Load volume_charge;                 // optional
   std::vector<SurfaceLoad> surface_charges;
   std::string contact;                // face region; empty: no contact
-  NormalLawSpec normal;
-  FrictionLawSpec friction;
-  FoundationSpec foundation;
+  // Registered law names with their parameters (bricks/law_registry.hpp); parameters left out take
+  // their declared defaults, and a required one must be given.
+  Choice normal{"linear_damped", {}};
+  Choice friction{"none", {}};
+  Choice foundation{"insulated", {}};
   double slip_threshold = 0;          // |v_tau| above which a contact node counts as sliding
-  TimeSchemeSpec scheme;              // backward_euler (the paper's) | bdf2 | theta (with scheme.theta)
+  Choice scheme{"backward_euler", {}};  // a registered time scheme: backward_euler | bdf2 | theta
   // Called after the recipe's bricks and before finalize(): a user's own bricks (e.g. a new law).
   std::function<void(Model&)> extra_bricks;
 };
@@ -71,15 +61,15 @@ struct PiezoContactModel {
   std::unique_ptr<TimeScheme> scheme;  // the one spec.scheme names, attached
   PiezoMaterial material;
   bool electric = false;
-  // Contact pressure p_nu at a node from the normal law's argument there (velocity or displacement)
-  // and the outward normal; zero without contact.
-  std::function<double(const double* argument, const double* normal, int dim)> contact_pressure;
-  std::string contact_argument;  // the field the normal law reads ("v" or "u")
-  std::array<double, 3> contact_normal{};
+  // The contact surface's normal brick (null without contact): what the output reads p_nu from, with the
+  // field its law reads, at the surface's nodes and their own normals.
+  std::shared_ptr<const NormalContactBrick> normal;
+  std::string contact_argument;  // "v", or "u" for a law that reads the displacement
+  ContactNodes contact_nodes;
 };
 
-// Validates the spec (tensor shapes and definiteness, regions, law parameters) with messages naming the
-// offending item, builds and finalizes the model.
+// Validates the spec (tensor shapes and definiteness, regions, law names and parameters) with messages
+// naming the offending item, builds and finalizes the model.
 PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec);
 
 }  // namespace pc

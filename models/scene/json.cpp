@@ -788,12 +788,17 @@ std::vector<std::string> unknown_keys(const Json& object, std::initializer_list<
 }
 
 void require_known_keys(const Json& object, std::initializer_list<std::string_view> allowed) {
-  const std::vector<std::string> unknown = unknown_keys(object, allowed);
+  require_known_keys(object, std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+void require_known_keys(const Json& object, const std::vector<std::string>& allowed) {
+  std::vector<std::string> unknown;
+  for (const auto& [key, value] : object.members())
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) unknown.push_back(value.path());
   if (unknown.empty()) return;
   std::string listed;
   for (const std::string& path : unknown) listed += (listed.empty() ? "'" : ", '") + path + "'";
-  fail("scene: unknown key", unknown.size() > 1 ? "s " : " ", listed, " (known: ",
-       join_sorted(std::vector<std::string>(allowed.begin(), allowed.end())), ")");
+  fail("scene: unknown key", unknown.size() > 1 ? "s " : " ", listed, " (known: ", join_sorted(allowed), ")");
 }
 
 }  // namespace pc

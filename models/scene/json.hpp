@@ -144,5 +144,6 @@ Json parse_json_value_from_cli(const std::string& text);
 std::vector<std::string> unknown_keys(const Json& object, std::initializer_list<std::string_view> allowed);
 // Throws "scene: unknown key 'contact.c_nuu' (known: c_nu, c_tau)" when unknown_keys is not empty.
 void require_known_keys(const Json& object, std::initializer_list<std::string_view> allowed);
+void require_known_keys(const Json& object, const std::vector<std::string>& allowed);
 
 }  // namespace pc

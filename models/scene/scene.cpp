@@ -8,7 +8,10 @@
 #include "assembly/error.hpp"
 #include "assembly/gmsh_import.hpp"
 #include "assembly/mesh_generators.hpp"
+#include "assembly/point_locator.hpp"
+#include "bricks/law_registry.hpp"
 #include "bricks/voigt.hpp"
+#include "models/scene/registered_keys.hpp"
 
 namespace pc {
 namespace {
@@ -57,6 +60,8 @@ std::vector<std::string> names_of(const Json& j) {
 
 std::shared_ptr<const Mesh> build_mesh(const Json& m, const std::string& directory, Scene& scene) {
   require_known_keys(m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor"});
+  require(!(m.contains("gmsh") && m.contains("generator")), "scene: 'mesh' gives both generator and gmsh: a mesh "
+          "is generated or read, not both");
   if (const Json* file = m.find("gmsh")) {
     std::filesystem::path path = file->as_string();
     if (path.is_relative()) path = std::filesystem::path(directory) / path;
@@ -116,17 +121,28 @@ void require_region(const Mesh& mesh, const Json& at, const std::string& name, R
           kind == RegionKind::Faces ? "face (boundary)" : "cell", " region");
 }
 
-FoundationSpec read_foundation(const Json& f) {
-  require_known_keys(f, {"type", "k_e", "phi_f", "p_ref"});
-  FoundationSpec spec;
-  spec.type = f.at("type").as_string();
-  require(spec.type == "insulated" || spec.type == "conductive" || spec.type == "pressure_activated", "scene: '",
-          f.at("type").path(), "' must be insulated, conductive or pressure_activated, got '", spec.type, "'");
-  if (spec.type == "insulated") return spec;
-  spec.k_e = f.at("k_e").as_number_at_least(0);
-  spec.phi_f = f.at("phi_f").as_number();
-  if (spec.type == "pressure_activated") spec.p_ref = f.at("p_ref").as_positive();
-  return spec;
+Choice read_foundation(const Json& f) {
+  const auto& entry = chosen_entry(f, "type", foundation_law_registry());
+  const ChosenEntry chosen{"foundation type '" + entry.name + "'", &entry.parameters};
+  require_read_keys(f, {"type"}, {chosen}, {registered_parameters("foundation type", foundation_law_registry())});
+  return {entry.name, read_parameters(f, chosen)};
+}
+
+// A name that is a plain file name: the runner writes <name>.pvd and <name>_<step>.vtu into OUT/<foundation>/.
+void require_file_name(const Json& at, const std::string& name) {
+  require(!name.empty(), "scene: '", at.path(), "' is empty");
+  const bool plain = std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
+  require(plain && name.front() != '.', "scene: '", at.path(), "' = '", name, "' must be a plain file name "
+          "(letters, digits, _ - ., not starting with a dot): it names output files");
+}
+
+// Every point must lie in the mesh (within round-off of its boundary): a probe outside it has no value.
+void require_points_in_mesh(const PointLocator& locator, const Json& at, const std::vector<std::array<double, 3>>& points) {
+  for (const auto& x : points)
+    require(locator.locate(x.data()).has_value(), "scene: '", at.path(), "': the point (", x[0], ", ", x[1], ", ",
+            x[2], ") is outside the mesh");
 }
 
 }  // namespace
@@ -135,7 +151,11 @@ Scene load_scene(const Json& json, const std::string& directory) {
   Scene scene;
   scene.json = json;
   Problems problems;
-  scene.name = problems.check([&] { return json.at("name").as_string(); }).value_or("unnamed");
+  scene.name = problems.check([&] {
+    const std::string name = json.at("name").as_string();
+    require_file_name(json.at("name"), name);
+    return name;
+  }).value_or("unnamed");
   problems.check_void([&] {
     require_known_keys(json, {"name", "about", "mesh", "regions", "material", "contact", "foundation", "loads", "time",
                               "solver", "output"});
@@ -163,10 +183,23 @@ Scene load_scene(const Json& json, const std::string& directory) {
       check_stiffness("material.elasticity_B", spec.B, dim);
     });
     problems.check_void([&] {
-      if (const Json* a = material->find("viscosity_A")) {
+      // A directly, or A = tau_v B (a Kelvin-Voigt relaxation time); both only when they agree.
+      const Json* a = material->find("viscosity_A");
+      const Json* tau = material->find("viscosity_tau_v");
+      if (a) {
         spec.A = a->as_matrix();
         check_stiffness("material.viscosity_A", spec.A, dim, /*allow_zero=*/true);
       }
+      if (!tau) return;
+      const double tau_v = tau->as_number_at_least(0);
+      const Eigen::MatrixXd B = material->at("elasticity_B").as_matrix();
+      if (!a) {
+        spec.A = tau_v * B;
+        return;
+      }
+      require(spec.A.rows() == B.rows() && spec.A.cols() == B.cols() &&
+                  (spec.A - tau_v * B).norm() <= 1e-12 * spec.A.norm(),
+              "scene: 'material.viscosity_A' and 'material.viscosity_tau_v' disagree (A != tau_v B): give one of them");
     });
     problems.check_void([&] {
       const Json* e = material->find("piezo_E");
@@ -188,7 +221,11 @@ Scene load_scene(const Json& json, const std::string& directory) {
     require_known_keys(r, {"clamped", "traction", "contact", "grounded", "charge"});
     if (const Json* c = r.find("clamped")) spec.clamped = names_of(*c);
     if (const Json* g = r.find("grounded")) spec.grounded = names_of(*g);
-    if (const Json* c = r.find("contact")) spec.contact = c->as_string();
+    if (const Json* c = r.find("contact")) {
+      spec.contact = c->as_string();
+      require(!spec.contact.empty(), "scene: 'regions.contact' is empty: name the contact region, or leave the key out "
+              "for a body without contact");
+    }
     if (!spec.mesh) return;
     for (const std::string& n : spec.clamped) require_region(*spec.mesh, r.at("clamped"), n, RegionKind::Faces);
     for (const std::string& n : spec.grounded) require_region(*spec.mesh, r.at("grounded"), n, RegionKind::Faces);
@@ -229,24 +266,29 @@ Scene load_scene(const Json& json, const std::string& directory) {
   problems.check_void([&] {
     if (spec.contact.empty()) return;
     const Json& c = json.at("contact");
-    require_known_keys(c, {"law_normal", "c_nu", "m", "gap", "law_tangential", "c_tau", "mu", "g", "eps"});
-    spec.normal.type = c.at("law_normal").as_string();
-    spec.normal.c_nu = c.at("c_nu").as_number_at_least(0);
-    if (const Json* m = c.find("m")) spec.normal.m = m->as_number_at_least(1);
-    if (const Json* g = c.find("gap")) spec.normal.gap = g->as_number();
-    spec.friction.type = c.contains("law_tangential") ? c.at("law_tangential").as_string() : "none";
-    if (const Json* x = c.find("c_tau")) spec.friction.c_tau = x->as_number_at_least(0);
-    if (const Json* x = c.find("mu")) spec.friction.mu = x->as_number_at_least(0);
-    if (const Json* x = c.find("g")) spec.friction.g = x->as_number_at_least(0);
-    if (const Json* x = c.find("eps")) spec.friction.eps = x->as_positive();
+    const auto& normal = chosen_entry(c, "law_normal", normal_law_registry());
+    const auto& friction = chosen_entry(c, "law_tangential", friction_law_registry(), "none");
+    const ChosenEntry chosen_normal{"law_normal '" + normal.name + "'", &normal.parameters};
+    const ChosenEntry chosen_friction{"law_tangential '" + friction.name + "'", &friction.parameters};
+    for (const ParameterDeclaration& d : friction.parameters)
+      require(!find_parameter(normal.parameters, d.name), "scene: 'contact.", d.name, "' would be read by both ",
+              chosen_normal.label, " and ", chosen_friction.label, ": laws paired in one contact object need "
+              "distinct parameter names");
+    require_read_keys(c, {"law_normal", "law_tangential"}, {chosen_normal, chosen_friction},
+                      {registered_parameters("law_normal", normal_law_registry()),
+                       registered_parameters("law_tangential", friction_law_registry())});
+    spec.normal = {normal.name, read_parameters(c, chosen_normal)};
+    spec.friction = {friction.name, read_parameters(c, chosen_friction)};
   });
 
   problems.check_void([&] {
     const Json& f = json.at("foundation");
     for (const auto& [name, value] : f.members()) {
       if (const auto foundation = problems.check([&] { return read_foundation(value); })) {
-        require(electric || foundation->type == "insulated", "scene: '", value.path(), "': a ", foundation->type,
+        require(electric || foundation->name == "insulated", "scene: '", value.path(), "': a ", foundation->name,
                 " foundation needs a piezoelectric body (material.piezo_E)");
+        require(!spec.contact.empty() || foundation->name == "insulated", "scene: '", value.path(), "': a ",
+                foundation->name, " foundation needs a contact region (regions.contact)");
         scene.foundations.push_back({name, *foundation});
       }
     }
@@ -255,7 +297,11 @@ Scene load_scene(const Json& json, const std::string& directory) {
 
   problems.check_void([&] {
     const Json& t = json.at("time");
-    require_known_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "theta", "max_attempts", "max_wall_seconds"});
+    const auto& scheme = chosen_entry(t, "scheme", time_scheme_registry(), "backward_euler");
+    const ChosenEntry chosen{"time.scheme '" + scheme.name + "'", &scheme.parameters};
+    require_read_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "max_attempts", "max_wall_seconds"},
+                      {chosen}, {registered_parameters("time.scheme", time_scheme_registry())});
+    spec.scheme = {scheme.name, read_parameters(t, chosen)};
     scene.end_time = t.at("T").as_positive();
     scene.steps = t.at("steps").as_int_at_least(1);
     if (const Json* x = t.find("max_attempts")) scene.max_attempts = x->as_int_at_least(0);
@@ -266,21 +312,6 @@ Scene load_scene(const Json& json, const std::string& directory) {
     require(p == "zero" || p == "previous", "scene: 'time.prediction' must be zero (the paper's) or previous, got '",
             p, "'");
     scene.prediction = p == "zero" ? Prediction::Zero : Prediction::Previous;
-  });
-
-  problems.check_void([&] {
-    const Json& t = json.at("time");
-    TimeSchemeSpec& scheme = spec.scheme;
-    if (const Json* s = t.find("scheme")) scheme.type = s->as_string();
-    require(scheme.type == "backward_euler" || scheme.type == "bdf2" || scheme.type == "theta", "scene: 'time.scheme' "
-            "must be backward_euler (the paper's), bdf2 or theta, got '", scheme.type, "'");
-    if (const Json* theta = t.find("theta")) {
-      require(scheme.type == "theta", "scene: '", theta->path(), "' is read by the theta scheme only, but time.scheme "
-              "is ", scheme.type);
-      scheme.theta = theta->as_number();
-      require(scheme.theta > 0 && scheme.theta <= 1, "scene: '", theta->path(), "' must be in (0, 1] (0.5: "
-              "Crank-Nicolson, 1: backward Euler), got ", scheme.theta);
-    }
   });
 
   problems.check_void([&] {
@@ -334,6 +365,17 @@ Scene load_scene(const Json& json, const std::string& directory) {
   });
   spec.slip_threshold = scene.output.slip_threshold;
 
+  problems.check_void([&] {
+    const Json* o = json.find("output");
+    if (!spec.mesh || !o) return;
+    const PointLocator locator(*spec.mesh);
+    if (const Json* p = o->find("probes")) {
+      require_points_in_mesh(locator, p->at("corner"), {scene.output.corner});
+      require_points_in_mesh(locator, p->at("center"), {scene.output.center});
+    }
+    if (const Json* g = o->find("grid")) require_points_in_mesh(locator, *g, scene.output.grid.points());
+  });
+
   problems.throw_if_any(scene.name);
   return scene;
 }
@@ -348,6 +390,14 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
     json.set_path(o.substr(0, eq), parse_json_value_from_cli(o.substr(eq + 1)), Json::NewKeys::allow);
   }
   return load_scene(json, std::filesystem::path(path).parent_path().string());
+}
+
+std::vector<std::array<double, 3>> SceneGrid::points() const {
+  std::vector<std::array<double, 3>> out;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i)
+      out.push_back({nx > 1 ? x0 + (x1 - x0) * i / (nx - 1) : x0, ny > 1 ? y0 + (y1 - y0) * j / (ny - 1) : y0, 0.0});
+  return out;
 }
 
 const SceneFoundation& find_foundation(const Scene& scene, const std::string& name) {

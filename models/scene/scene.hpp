@@ -17,12 +17,14 @@ namespace pc {
 
 struct SceneFoundation {
   std::string name;  // the key in "foundation": a run writes into OUT/<name>/
-  FoundationSpec spec;
+  Choice law;        // a registered foundation law ("insulated", "conductive", ...) with its parameters
 };
 
 struct SceneGrid {
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
   int nx = 0, ny = 0;  // sample points along each axis
+  // The sample points, x fastest, in the plane z = 0.
+  std::vector<std::array<double, 3>> points() const;
 };
 
 struct SceneOutput {
@@ -40,7 +42,7 @@ struct Scene {
   std::string name;
   std::string mesh_description;  // e.g. "60 x 20 triangle, P1"
   int nx = 0, ny = 0;            // structured meshes only
-  PiezoContactSpec spec;         // everything but the foundation; spec.scheme from time.scheme, time.theta
+  PiezoContactSpec spec;         // everything but the foundation; spec.scheme from time.scheme and its parameters
   std::vector<double> u0, v0;    // constant initial displacement and velocity
   std::vector<SceneFoundation> foundations;
   double end_time = 0;

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 
 #include "assembly/atomic_file.hpp"
 #include "assembly/error.hpp"
 #include "assembly/point_locator.hpp"
+#include "bricks/law_registry.hpp"
 #include "models/output/boundary_table.hpp"
 #include "models/output/csv_log.hpp"
 #include "models/output/result_series.hpp"
@@ -24,24 +26,25 @@ double probe(const Model& m, const PointLocator& locator, const std::string& fie
   return evaluate_at(m.space(field), m.values(field), locator, x.data())[component];
 }
 
-// Contact pressure at the mesh nodes (zero off the contact boundary), as VTU point data.
-std::vector<double> nodal_contact_pressure(const PiezoContactModel& built, const PiezoContactSpec& spec) {
+// Contact pressure at the mesh nodes (zero off the contact boundary), as VTU point data: the model's own
+// normal brick at the contact nodes, each split against its own normal.
+std::vector<double> nodal_contact_pressure(const PiezoContactModel& built) {
   const Model& m = *built.model;
-  const Mesh& mesh = m.mesh();
-  std::vector<double> pressure(mesh.num_nodes(), 0.0);
-  if (spec.contact.empty()) return pressure;
+  std::vector<double> pressure(m.mesh().num_nodes(), 0.0);
+  if (!built.normal) return pressure;
   const FESpace& space = m.space("v");
-  const Eigen::VectorXd& argument = m.values(built.contact_argument);
-  const int dim = mesh.dim();
-  for (const FaceRef& f : mesh.face_region(spec.contact)) {
-    const auto dofs = space.cell_scalar_dofs(f.cell);
-    const auto vertices = face_vertices(mesh.cell_shape(), f.local_face);
-    for (int local : vertices) {  // vertex dofs come first, in the cell's vertex order
-      double r[3] = {0, 0, 0};
-      for (int d = 0; d < dim; ++d) r[d] = argument[space.dof(dofs[local], d)];
-      pressure[mesh.cell(f.cell)[local]] = built.contact_pressure(r, built.contact_normal.data(), dim);
-    }
+  const std::vector<double> p =
+      nodal_contact_pressure(*built.normal, space, built.contact_nodes, m.values(built.contact_argument));
+  // Mesh vertices are the first dofs of each cell; a P2 space's other nodes are not mesh nodes.
+  std::map<int, int> vertex_of_dof;
+  for (int c = 0; c < m.mesh().num_cells(); ++c) {
+    const auto dofs = space.cell_scalar_dofs(c);
+    const auto vertices = m.mesh().cell(c);
+    for (size_t k = 0; k < vertices.size(); ++k) vertex_of_dof[dofs[k]] = vertices[k];
   }
+  for (size_t i = 0; i < p.size(); ++i)
+    if (const auto it = vertex_of_dof.find(built.contact_nodes.scalar_dofs[i]); it != vertex_of_dof.end())
+      pressure[it->second] = p[i];
   return pressure;
 }
 
@@ -61,28 +64,29 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
     return probe(m, locator, field, c, x);
   };
 
-  // Contact boundary, sorted by x.
-  if (!scene.spec.contact.empty()) {
-    const BoundaryNodes nodes = boundary_nodes(m.space("v"), scene.spec.contact, 0);
+  // Contact boundary, sorted by x: the nodal dof values (a clamped node reads exact zeros), the model's own
+  // normal brick for the pressure, each node's own normal for the slip.
+  if (built.normal) {
+    const FESpace& vspace = m.space("v");
+    const BoundaryNodes nodes = boundary_nodes(vspace, scene.spec.contact, 0);
+    const ContactNodes& contact = built.contact_nodes;
+    const std::vector<double> pressure = nodal_contact_pressure(*built.normal, vspace, contact, m.values(built.contact_argument));
+    const std::vector<double> slip = nodal_slip_speed(vspace, contact, m.values("v"));
+    std::vector<double> phi;
+    if (electric) phi = values_at_nodes(nodes, m.space("phi"), m.values("phi"), 0);
     std::vector<std::vector<double>> rows;
     for (size_t i = 0; i < nodes.points.size(); ++i) {
-      const auto& x = nodes.points[i];
-      double v[3] = {0, 0, 0}, arg[3] = {0, 0, 0};
-      for (int d = 0; d < dim; ++d) {
-        v[d] = at("v", d, x);
-        arg[d] = at(built.contact_argument, d, x);
-      }
-      std::vector<double> row = {x[0]};
-      if (dim == 3) row.push_back(x[2]);
-      for (int d = 0; d < dim; ++d) row.push_back(at("u", d, x));
-      for (int d = 0; d < dim; ++d) row.push_back(v[d]);
-      row.push_back(electric ? at("phi", 0, x) : 0.0);
-      row.push_back(built.contact_pressure(arg, built.contact_normal.data(), dim));
+      const int dof = nodes.scalar_dofs[i];
+      const size_t k = std::lower_bound(contact.scalar_dofs.begin(), contact.scalar_dofs.end(), dof) -
+                       contact.scalar_dofs.begin();
+      std::vector<double> row = {nodes.points[i][0]};
+      if (dim == 3) row.push_back(nodes.points[i][2]);
+      for (const char* field : {"u", "v"})
+        for (int d = 0; d < dim; ++d) row.push_back(m.values(field)[vspace.dof(dof, d)]);
+      row.push_back(electric ? phi[i] : 0.0);
+      row.push_back(pressure[k]);
       rows.push_back(row);
-      double vn = 0, vt2 = 0;
-      for (int d = 0; d < dim; ++d) vn += v[d] * built.contact_normal[d];
-      for (int d = 0; d < dim; ++d) vt2 += std::pow(v[d] - vn * built.contact_normal[d], 2);
-      r.max_abs_vtau_contact = std::max(r.max_abs_vtau_contact, std::sqrt(vt2));
+      r.max_abs_vtau_contact = std::max(r.max_abs_vtau_contact, slip[k]);
     }
     std::vector<std::string> columns = dim == 2 ? std::vector<std::string>{"x", "ux", "uy", "vx", "vy", "phi", "contact_pressure"}
                                                 : std::vector<std::string>{"x", "z", "ux", "uy", "uz", "vx", "vy", "vz", "phi",
@@ -92,16 +96,11 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
   if (dir.empty()) return;
 
   // The output grid (x fastest), in the plane z = 0 for 3D scenes.
-  const SceneGrid& g = scene.output.grid;
-  if (g.nx > 0 && g.ny > 0) {
+  if (scene.output.grid.nx > 0 && scene.output.grid.ny > 0) {
     std::vector<std::vector<double>> rows;
-    for (int j = 0; j < g.ny; ++j)
-      for (int i = 0; i < g.nx; ++i) {
-        const std::array<double, 3> x = {g.nx > 1 ? g.x0 + (g.x1 - g.x0) * i / (g.nx - 1) : g.x0,
-                                         g.ny > 1 ? g.y0 + (g.y1 - g.y0) * j / (g.ny - 1) : g.y0, 0.0};
-        rows.push_back({x[0], x[1], at("u", 0, x), at("u", 1, x), at("v", 0, x), at("v", 1, x),
-                        electric ? at("phi", 0, x) : 0.0});
-      }
+    for (const std::array<double, 3>& x : scene.output.grid.points())
+      rows.push_back({x[0], x[1], at("u", 0, x), at("u", 1, x), at("v", 0, x), at("v", 1, x),
+                      electric ? at("phi", 0, x) : 0.0});
     write_csv(dir + "/grid.csv", {"x", "y", "ux", "uy", "vx", "vy", "phi"}, rows);
   }
 
@@ -160,19 +159,39 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
 
 }  // namespace
 
+namespace {
+
+PiezoContactModel build_foundation_model(const Scene& scene, const SceneFoundation& foundation) {
+  PiezoContactSpec spec = scene.spec;
+  spec.foundation = foundation.law;
+  return build_piezo_contact_model(spec);
+}
+
+}  // namespace
+
+FoundationRun::FoundationRun(const Scene& scene, const SceneFoundation& foundation)
+    : scene_(scene), foundation_(foundation), built_(build_foundation_model(scene, foundation)), newton_(scene.newton) {}
+
 FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& dir,
                                    bool progress, int steps_override) {
+  return FoundationRun(scene, foundation).run(dir, progress, steps_override);
+}
+
+FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, int steps_override) {
   const auto start = std::chrono::steady_clock::now();
+  const Scene& scene = scene_;
+  const SceneFoundation& foundation = foundation_;
+  PiezoContactModel& built = built_;
+  NewtonSolver& newton = newton_;
   FoundationRunResult result;
   result.foundation = foundation.name;
-  PiezoContactSpec spec = scene.spec;
-  spec.foundation = foundation.spec;
-  PiezoContactModel built = build_piezo_contact_model(spec);
   Model& m = *built.model;
   const Mesh& mesh = m.mesh();
   const int dim = mesh.dim();
   for (const std::string& u : m.unknowns()) result.ndof += m.space(u).num_dofs();
 
+  // Every run starts from the scene's initial state, whatever an earlier run of this model left.
+  for (const std::string& u : m.unknowns()) m.set_values(u, Eigen::VectorXd::Zero(m.space(u).num_dofs()));
   const FESpace& vspace = m.space("v");
   auto constant = [&](const std::vector<double>& value) {
     return vspace.interpolate([&](const double*, double* out) {
@@ -191,7 +210,6 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
   options.output_every = scene.output.vtu_every;
   options.max_attempts = scene.max_attempts;
   options.max_wall_seconds = scene.max_wall_seconds;
-  NewtonSolver newton(scene.newton);
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");
 
@@ -239,7 +257,7 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
     if (!series) return;
     VtuWriter writer(mesh);
     add_piezo_output(writer, model, built.material);
-    writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built, spec));
+    writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
     series->write(r.step, r.time, writer);
   };
 
@@ -290,15 +308,17 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
                   r.message.empty() ? "" : ("; " + r.message).c_str());
   }
 
-  // Figure 5: final displacement against the foundation voltage.
-  const auto conductive = std::find_if(scene.foundations.begin(), scene.foundations.end(),
-                                       [](const SceneFoundation& f) { return f.spec.type != "insulated"; });
-  if (options.sweep && !scene.output.phi_f_sweep.empty() && conductive != scene.foundations.end() && !out.empty()) {
+  // Figure 5: final displacement against the foundation voltage, from one model of the first foundation
+  // whose law has a phi_f: each run changes that constant only.
+  const auto swept = std::find_if(scene.foundations.begin(), scene.foundations.end(), [](const SceneFoundation& f) {
+    return find_parameter(foundation_law_registry().at(f.law.name, "foundation").parameters, "phi_f") != nullptr;
+  });
+  if (options.sweep && !scene.output.phi_f_sweep.empty() && swept != scene.foundations.end() && !out.empty()) {
+    FoundationRun sweep(scene, *swept);
     std::vector<std::vector<double>> rows;
     for (double phi_f : scene.output.phi_f_sweep) {
-      SceneFoundation f = *conductive;
-      f.spec.phi_f = phi_f;
-      const FoundationRunResult r = run_foundation(scene, f, "", false, scene.output.sweep_steps);
+      sweep.model().set_constant("phi_f", phi_f);
+      const FoundationRunResult r = sweep.run("", false, scene.output.sweep_steps);
       all_completed = all_completed && r.completed;
       rows.push_back({phi_f, r.max_abs_ux, r.max_abs_uy, r.ux_corner, r.uy_corner});
       if (options.progress)

@@ -37,7 +37,26 @@ struct FoundationRunResult {
   std::string message;
 };
 
-// Runs one foundation of the scene; with an empty directory nothing is written (studies, tests).
+// One foundation of a scene: its model built once, then run as often as asked, each run from the scene's
+// initial state. A parameter study changes model constants between runs (the phi_f sweep sets "phi_f"):
+// only the bricks that read a changed constant are rebuilt, and the pattern, the symbolic analysis and
+// the cached linear bricks are kept.
+class FoundationRun {
+ public:
+  FoundationRun(const Scene& scene, const SceneFoundation& foundation);
+  // With an empty directory nothing is written (studies, tests); steps_override > 0 replaces the scene's.
+  FoundationRunResult run(const std::string& directory, bool progress, int steps_override = 0);
+  Model& model() { return *built_.model; }
+  const NewtonSolver& newton() const { return newton_; }
+
+ private:
+  const Scene& scene_;
+  SceneFoundation foundation_;
+  PiezoContactModel built_;
+  NewtonSolver newton_;
+};
+
+// Builds and runs one foundation of the scene once (FoundationRun for several runs of one model).
 FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& directory,
                                    bool progress, int steps_override = 0);
 

@@ -388,14 +388,14 @@ TEST(SchemeMaps, BetweenStepsTheDisplacementReadsAsTheCommittedOne) {
 // ---- by name: factory, recipe, scenes ----------------------------------------------------------------
 
 TEST(SchemeByName, FactoryRecipeAndSceneChooseTheScheme) {
-  EXPECT_EQ(make_time_scheme({})->name(), "backward_euler");
-  EXPECT_EQ(make_time_scheme({"bdf2"})->order(), 2);
-  EXPECT_EQ(make_time_scheme({"theta", 0.5})->order(), 2);
-  EXPECT_EQ(make_time_scheme({"theta", 0.6})->order(), 1);
-  EXPECT_THROW(make_time_scheme({"theta", 0.0}), Error);
-  EXPECT_THROW(make_time_scheme({"theta", 1.5}), Error);
+  EXPECT_EQ(make_time_scheme()->name(), "backward_euler");
+  EXPECT_EQ(make_time_scheme({"bdf2", {}})->order(), 2);
+  EXPECT_EQ(make_time_scheme({"theta", {{"theta", 0.5}}})->order(), 2);
+  EXPECT_EQ(make_time_scheme({"theta", {{"theta", 0.6}}})->order(), 1);
+  EXPECT_THROW(make_time_scheme({"theta", {{"theta", 0.0}}}), Error);
+  EXPECT_THROW(make_time_scheme({"theta", {{"theta", 1.5}}}), Error);
   try {
-    make_time_scheme({"newmark"});
+    make_time_scheme({"newmark", {}});
     FAIL() << "expected an error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("backward_euler, bdf2, theta"), std::string::npos) << e.what();
