@@ -15,7 +15,6 @@
 
 #include "bricks/source_bricks.hpp"
 #include "models/model.hpp"
-#include "models/output/piezo_fields.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {
@@ -69,7 +68,6 @@ struct PiezoContactSpec {
 struct PiezoContactModel {
   std::unique_ptr<Model> model;
   std::unique_ptr<TimeScheme> scheme;  // the one spec.scheme names, attached
-  PiezoMaterial material;
   bool electric = false;
   // Contact pressure p_nu at a node from the normal law's argument there (velocity or displacement)
   // and the outward normal; zero without contact.
