@@ -84,6 +84,70 @@ std::uint8_t vtk_cell_type(Shape shape) {
   fail("VtuWriter: no VTK cell type for shape ", static_cast<int>(shape));
 }
 
+// The VTK cell of an order-2 element. VTK orders its nodes as the element orders its local dofs
+// (reference_element.hpp, with the edge and face tables of shape.cpp), so the permutation from local
+// dofs to VTK nodes is the identity and a cell's connectivity is its dofs as they are:
+//   VTK_QUADRATIC_TRIANGLE (22, 6 nodes): vertices 0-2, then the mid-edges of (0,1) (1,2) (2,0).
+//   VTK_BIQUADRATIC_QUAD (28, 9 nodes): vertices 0-3, the mid-edges of (0,1) (1,2) (2,3) (3,0), the centre.
+//   VTK_QUADRATIC_TETRA (24, 10 nodes): vertices 0-3, the mid-edges of (0,1) (1,2) (0,2) (0,3) (1,3) (2,3).
+//   VTK_TRIQUADRATIC_HEXAHEDRON (29, 27 nodes): vertices 0-7, the mid-edges of (0,1) (1,2) (2,3) (3,0)
+//     (4,5) (5,6) (6,7) (7,4) (0,4) (1,5) (2,6) (3,7), the centres of the faces x = 0, x = 1, y = 0,
+//     y = 1, z = 0, z = 1 (the order of VTK's code and parametric coordinates; its class documentation
+//     lists another), the cell centre.
+// tests/engine/vtu_writer_test.cpp checks every local dof against VTK's parametric coordinates.
+std::uint8_t vtk_quadratic_cell_type(Shape shape) {
+  switch (shape) {
+    case Shape::Triangle: return 22;
+    case Shape::Quadrilateral: return 28;
+    case Shape::Tetrahedron: return 24;
+    case Shape::Hexahedron: return 29;
+    default: break;
+  }
+  fail("VtuWriter: no quadratic VTK cell type for a ", to_string(shape));
+}
+
+// The points (3 coordinates each, z = 0 in 2D) and cells of a file.
+struct Grid {
+  int num_points = 0;
+  std::vector<double> points;
+  std::vector<std::int64_t> connectivity;
+  std::vector<std::int64_t> offsets;
+  std::vector<std::uint8_t> types;
+};
+
+std::vector<std::int64_t> offsets(int num_cells, int nodes_per_cell) {
+  std::vector<std::int64_t> ends(num_cells);
+  for (int c = 0; c < num_cells; ++c) ends[c] = std::int64_t(c + 1) * nodes_per_cell;
+  return ends;
+}
+
+Grid linear_grid(const Mesh& mesh) {
+  Grid grid;
+  grid.num_points = mesh.num_nodes();
+  grid.points.assign(size_t(mesh.num_nodes()) * 3, 0.0);
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    for (int d = 0; d < mesh.dim(); ++d) grid.points[size_t(n) * 3 + d] = mesh.node(n)[d];
+  grid.connectivity.assign(mesh.connectivity().begin(), mesh.connectivity().end());
+  grid.offsets = offsets(mesh.num_cells(), mesh.vertices_per_cell());
+  grid.types.assign(mesh.num_cells(), vtk_cell_type(mesh.cell_shape()));
+  return grid;
+}
+
+// The dofs of an order-2 scalar space of the whole mesh as points, its cells as quadratic cells.
+Grid quadratic_grid(const FESpace& space) {
+  const Mesh& mesh = space.mesh();
+  Grid grid;
+  grid.num_points = space.num_scalar_dofs();
+  grid.points.assign(size_t(space.num_scalar_dofs()) * 3, 0.0);
+  for (int s = 0; s < space.num_scalar_dofs(); ++s)
+    for (int d = 0; d < mesh.dim(); ++d) grid.points[size_t(s) * 3 + d] = space.scalar_dof_point(s)[d];
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    for (const int dof : space.cell_scalar_dofs(c)) grid.connectivity.push_back(dof);
+  grid.offsets = offsets(mesh.num_cells(), space.element().num_dofs());
+  grid.types.assign(mesh.num_cells(), vtk_quadratic_cell_type(mesh.cell_shape()));
+  return grid;
+}
+
 void require_unique_name(const std::string& kind, const std::string& name, auto const& arrays) {
   require(!name.empty(), "VtuWriter: a ", kind, " field needs a name");
   for (const auto& a : arrays) require(a.name != name, "VtuWriter: ", kind, " field '", name, "' added twice");
@@ -103,30 +167,51 @@ void VtuWriter::add_point_field(const std::string& name, const FESpace& space,
   // Vectors are padded to 3 components because ParaView only treats 3-component arrays as vectors.
   const int components = field_components == 1 ? 1 : 3;
 
-  // Nodes outside the space's cell region keep the value 0 (VTK has no notion of a partial field).
-  std::vector<double> values(size_t(mesh_.num_nodes()) * components, 0.0);
-  const ReferenceElement& element = space.element();
+  if (space.order() == 1) {
+    // The dofs of a P1/Q1 field are its values at the vertices of its cells, in the cell's vertex order.
+    std::vector<double> values(size_t(mesh_.num_nodes()) * components, 0.0);
+    std::vector<bool> cells(mesh_.num_cells(), false);
+    for (int c = 0; c < mesh_.num_cells(); ++c) {
+      if (!space.has_cell(c)) continue;
+      cells[c] = true;
+      const auto nodes = mesh_.cell(c);
+      const auto dofs = space.cell_scalar_dofs(c);
+      for (size_t v = 0; v < nodes.size(); ++v)
+        for (int k = 0; k < field_components; ++k)
+          values[size_t(nodes[v]) * components + k] = coefficients[space.dof(dofs[v], k)];
+    }
+    add_mesh_node_data(name, components, std::move(values), std::move(cells));
+    return;
+  }
+
+  require_unique_name("point", name, point_data_);
+  if (!quadratic_points_) quadratic_points_ = std::make_shared<const FESpace>(space.mesh_ptr(), 2, 1);
+  const FESpace& points = *quadratic_points_;
+  std::vector<double> values(size_t(points.num_scalar_dofs()) * components, 0.0);
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     if (!space.has_cell(c)) continue;
-    const auto nodes = mesh_.cell(c);
-    const auto dofs = space.cell_scalar_dofs(c);
-    for (int i = 0; i < element.num_dofs(); ++i) {
-      const DofEntity entity = element.dof_entity(i);
-      if (entity.dim != 0) continue;
+    // Both spaces list a cell's dofs in the element's local order.
+    const auto to = points.cell_scalar_dofs(c);
+    const auto from = space.cell_scalar_dofs(c);
+    for (size_t i = 0; i < to.size(); ++i)
       for (int k = 0; k < field_components; ++k)
-        values[size_t(nodes[entity.index]) * components + k] = coefficients[space.dof(dofs[i], k)];
-    }
+        values[size_t(to[i]) * components + k] = coefficients[space.dof(from[i], k)];
   }
-  add_point_data(name, components, std::move(values));
+  point_data_.push_back({{name, components, std::move(values)}, false, {}});
 }
 
 void VtuWriter::add_point_data(const std::string& name, int components, std::vector<double> values) {
+  add_mesh_node_data(name, components, std::move(values), {});
+}
+
+void VtuWriter::add_mesh_node_data(const std::string& name, int components, std::vector<double> values,
+                                   std::vector<bool> cells) {
   require_unique_name("point", name, point_data_);
   require(components >= 1, "VtuWriter: point field '", name, "' needs at least one component, got ",
           components);
   require(values.size() == size_t(components) * mesh_.num_nodes(), "VtuWriter: point field '", name, "' has ",
           values.size(), " values, expected ", components, " x ", mesh_.num_nodes(), " nodes");
-  point_data_.push_back({name, components, std::move(values)});
+  point_data_.push_back({{name, components, std::move(values)}, true, std::move(cells)});
 }
 
 void VtuWriter::add_cell_data(const std::string& name, int components, std::vector<double> values) {
@@ -138,35 +223,56 @@ void VtuWriter::add_cell_data(const std::string& name, int components, std::vect
   cell_data_.push_back({name, components, std::move(values)});
 }
 
+std::vector<double> VtuWriter::at_quadratic_points(const PointArray& array) const {
+  const FESpace& points = *quadratic_points_;
+  const ReferenceElement& linear = ReferenceElement::get(mesh_.cell_shape(), 1);
+  const ReferenceElement& quadratic = points.element();
+  const int vertices = linear.num_dofs();
+  // weights[i * vertices + v]: the P1/Q1 function of vertex v at quadratic node i, the same in every cell.
+  std::vector<double> weights(size_t(quadratic.num_dofs()) * vertices);
+  for (int i = 0; i < quadratic.num_dofs(); ++i)
+    linear.values(quadratic.dof_point(i).data(), weights.data() + size_t(i) * vertices);
+
+  const int components = array.components;
+  std::vector<double> values(size_t(points.num_scalar_dofs()) * components, 0.0);
+  for (int c = 0; c < mesh_.num_cells(); ++c) {
+    if (!array.cells.empty() && !array.cells[c]) continue;
+    const auto nodes = mesh_.cell(c);
+    const auto to = points.cell_scalar_dofs(c);
+    for (size_t i = 0; i < to.size(); ++i)
+      for (int k = 0; k < components; ++k) {
+        double value = 0;
+        for (int v = 0; v < vertices; ++v)
+          value += weights[i * vertices + v] * array.values[size_t(nodes[v]) * components + k];
+        values[size_t(to[i]) * components + k] = value;
+      }
+  }
+  return values;
+}
+
 void VtuWriter::write(const std::string& path) const {
-  const int dim = mesh_.dim();
-  std::vector<double> points(size_t(mesh_.num_nodes()) * 3, 0.0);
-  for (int n = 0; n < mesh_.num_nodes(); ++n)
-    for (int d = 0; d < dim; ++d) points[size_t(n) * 3 + d] = mesh_.node(n)[d];
-
-  const int per_cell = mesh_.vertices_per_cell();
-  std::vector<std::int64_t> connectivity(mesh_.connectivity().begin(), mesh_.connectivity().end());
-  std::vector<std::int64_t> offsets(mesh_.num_cells());
-  for (int c = 0; c < mesh_.num_cells(); ++c) offsets[c] = std::int64_t(c + 1) * per_cell;
-  const std::vector<std::uint8_t> types(mesh_.num_cells(), vtk_cell_type(mesh_.cell_shape()));
-
+  const Grid grid = quadratic_points_ ? quadratic_grid(*quadratic_points_) : linear_grid(mesh_);
   write_atomically(path, "VtuWriter", [&](std::ostream& out) {
     out << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" "
            "header_type=\"UInt64\">\n"
         << "  <UnstructuredGrid>\n"
-        << "    <Piece NumberOfPoints=\"" << mesh_.num_nodes() << "\" NumberOfCells=\"" << mesh_.num_cells()
+        << "    <Piece NumberOfPoints=\"" << grid.num_points << "\" NumberOfCells=\"" << mesh_.num_cells()
         << "\">\n";
     out << "      <PointData>\n";
-    for (const Array& a : point_data_) write_data_array(out, "Float64", a.name, a.components, encode(a.values, 8));
+    for (const PointArray& a : point_data_) {
+      const bool interpolate = quadratic_points_ && a.at_mesh_nodes;
+      write_data_array(out, "Float64", a.name, a.components,
+                       interpolate ? encode(at_quadratic_points(a), 8) : encode(a.values, 8));
+    }
     out << "      </PointData>\n      <CellData>\n";
     for (const Array& a : cell_data_) write_data_array(out, "Float64", a.name, a.components, encode(a.values, 8));
     out << "      </CellData>\n      <Points>\n";
-    write_data_array(out, "Float64", "Points", 3, encode(points, 8));
+    write_data_array(out, "Float64", "Points", 3, encode(grid.points, 8));
     out << "      </Points>\n      <Cells>\n";
-    write_data_array(out, "Int64", "connectivity", 1, encode(connectivity, 8));
-    write_data_array(out, "Int64", "offsets", 1, encode(offsets, 8));
-    write_data_array(out, "UInt8", "types", 1, encode(types, 1));
+    write_data_array(out, "Int64", "connectivity", 1, encode(grid.connectivity, 8));
+    write_data_array(out, "Int64", "offsets", 1, encode(grid.offsets, 8));
+    write_data_array(out, "UInt8", "types", 1, encode(grid.types, 1));
     out << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   });
 }

@@ -1,7 +1,10 @@
 #pragma once
 // VTK XML unstructured-grid output (.vtu) of fields on a mesh, and the .pvd collection that ParaView
-// reads as a time series. Fields of any order are written at the mesh vertices (the vertex dofs of a
-// Lagrange space); cell data carries one or more values per cell.
+// reads as a time series. A file is linear, the mesh's nodes and cells, unless an order-2 field is
+// added: it is then quadratic, its points the order-2 Lagrange nodes of the whole mesh and its cells
+// VTK's quadratic cells, so that a P2/Q2 field is written as its dof values, exactly. Cell data carries
+// one or more values per cell.
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,8 +20,10 @@ class VtuWriter {
   explicit VtuWriter(const Mesh& mesh);
 
   // A field of a space on this mesh: scalar (1 component) or vector (dim components, padded to 3).
+  // Points outside the space's cell region get 0 (VTK has no notion of a partial field).
   void add_point_field(const std::string& name, const FESpace& space, const Eigen::VectorXd& coefficients);
-  // Point data given directly at the mesh nodes: num_nodes * components values.
+  // Point data given directly at the mesh nodes: num_nodes * components values. A quadratic file
+  // writes their linear (P1/Q1) interpolant at its other points.
   void add_point_data(const std::string& name, int components, std::vector<double> values);
   // Cell data: num_cells * components values.
   void add_cell_data(const std::string& name, int components, std::vector<double> values);
@@ -32,8 +37,22 @@ class VtuWriter {
     int components;
     std::vector<double> values;
   };
+  // Point values at the mesh nodes, or at the quadratic points. Values at the mesh nodes are interpolated
+  // only when a quadratic file is written, since a field added later may make the file quadratic; they
+  // interpolate on the given cells (empty: all cells).
+  struct PointArray : Array {
+    bool at_mesh_nodes;
+    std::vector<bool> cells;
+  };
+
+  void add_mesh_node_data(const std::string& name, int components, std::vector<double> values,
+                          std::vector<bool> cells);
+  std::vector<double> at_quadratic_points(const PointArray& array) const;
+
   const Mesh& mesh_;
-  std::vector<Array> point_data_;
+  // The whole mesh's order-2 scalar space, whose dofs are a quadratic file's points; null while linear.
+  std::shared_ptr<const FESpace> quadratic_points_;
+  std::vector<PointArray> point_data_;
   std::vector<Array> cell_data_;
 };
 

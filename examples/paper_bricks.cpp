@@ -40,14 +40,13 @@
 using namespace pc;
 
 // PZT-5H in plane strain, poled along +y, Voigt order (xx, yy, xy) with engineering shear: the values of
-// the scene file scenes/paper2d.json. SI units.
-PiezoMaterial pzt5h() {
-  PiezoMaterial m;
-  m.B = Eigen::MatrixXd{{127.205e9, 84.6702e9, 0}, {84.6702e9, 117.436e9, 0}, {0, 0, 22.9885e9}};  // elasticity
-  m.A = 0.01 * m.B;                                                        // viscosity, tau_v = 0.01 s
-  m.E = Eigen::MatrixXd{{0, 0, 17.0345}, {-6.62281, 23.2403, 0}};          // piezoelectric, 2 x 3
-  m.beta = Eigen::MatrixXd{{1.5091e-8, 0}, {0, 1.2693e-8}};                // permittivity, 2 x 2
-  return m;
+// the scene file scenes/paper2d.json, as the model's constants (SI units).
+void set_pzt5h(Model& model) {
+  const Eigen::MatrixXd B{{127.205e9, 84.6702e9, 0}, {84.6702e9, 117.436e9, 0}, {0, 0, 22.9885e9}};
+  model.set_constant("B", B);                                                         // elasticity
+  model.set_constant("A", 0.01 * B);                                                  // viscosity, tau_v = 0.01 s
+  model.set_constant("E", Eigen::MatrixXd{{0, 0, 17.0345}, {-6.62281, 23.2403, 0}});  // piezoelectric, 2 x 3
+  model.set_constant("beta", Eigen::MatrixXd{{1.5091e-8, 0}, {0, 1.2693e-8}});        // permittivity, 2 x 2
 }
 
 int main(int argc, char** argv) {
@@ -64,13 +63,9 @@ int main(int argc, char** argv) {
     BackwardEuler scheme;
     scheme.attach(model, /*with_acceleration=*/true);
 
-    // ---- constants: the bricks read them by name ---------------------------------------------------
-    const PiezoMaterial material = pzt5h();
+    // ---- constants: the bricks (and the output) read them by name ---------------------------------
     model.set_constant("rho", 7800.0);
-    model.set_constant("A", material.A);
-    model.set_constant("B", material.B);
-    model.set_constant("E", material.E);
-    model.set_constant("beta", material.beta);
+    set_pzt5h(model);
 
     // ---- bricks -----------------------------------------------------------------------------------
     // Bulk: rho a.w + A eps(v):eps(w) + B eps(u):eps(w) + E^T grad phi:eps(w) - E eps(u).grad psi
@@ -118,7 +113,7 @@ int main(int argc, char** argv) {
     };
     callbacks.on_output = [&](const Model& m, const StepRecord& step) {
       VtuWriter writer(m.mesh());
-      add_piezo_output(writer, m, material);  // v, u, phi, strain, stress, von Mises, E and D fields
+      add_piezo_output(writer, m);  // v, u, phi, strain, stress, von Mises, E and D fields
       series.write(step.step, step.time, writer);
     };
 

@@ -62,17 +62,18 @@ void require_components(const Model& model, const std::string& name, int compone
   require(actual == components, what, ": field '", name, "' has ", actual, " components, expected ", components);
 }
 
-void require_shape(const Eigen::MatrixXd& tensor, const char* name, int rows, int cols, int dim) {
-  require(tensor.rows() == rows && tensor.cols() == cols, "PiezoMaterial: ", name, " is ", tensor.rows(), " x ",
-          tensor.cols(), ", a ", dim, "D model needs ", rows, " x ", cols);
-}
-
-// Whether a term tensor * field contributes: both present (shape checked).
-bool has_term(const Model& model, const std::string& field, const Eigen::MatrixXd& tensor, const char* tensor_name,
-              int rows, int cols) {
-  if (tensor.size() == 0 || !model.has_field(field)) return false;
-  require_shape(tensor, tensor_name, rows, cols, model.mesh().dim());
-  return true;
+// The tensor of the term tensor * field: null without the field, or without an optional constant;
+// otherwise the model's constant, which must exist and have the shape rows x cols.
+const Eigen::MatrixXd* term_tensor(const Model& model, const std::string& field, const char* constant,
+                                   const char* what, int rows, int cols, bool optional = false) {
+  if (!model.has_field(field) || (optional && !model.has_constant(constant))) return nullptr;
+  require(model.has_constant(constant), "piezo output: field '", field, "' needs the constant '", constant, "' (",
+          what, "), which the model does not have");
+  const Eigen::MatrixXd& tensor = model.constant(constant);
+  require(tensor.rows() == rows && tensor.cols() == cols, "piezo output: constant '", constant, "' (", what,
+          ") is ", tensor.rows(), " x ", tensor.cols(), ", a ", model.mesh().dim(), "D model needs ", rows, " x ",
+          cols);
+  return &tensor;
 }
 
 // Per cell: out_c += scale * tensor * in_c, with in and out stored cell after cell.
@@ -101,16 +102,16 @@ std::vector<double> cell_strain(const Model& model, const std::string& displacem
   return strain;
 }
 
-std::vector<double> cell_stress(const Model& model, const PiezoMaterial& material, const PiezoFieldNames& names) {
+std::vector<double> cell_stress(const Model& model, const PiezoFieldNames& names) {
   const int dim = model.mesh().dim();
   const int n = voigt_size(dim);
   std::vector<double> stress(size_t(model.mesh().num_cells()) * n, 0.0);
-  if (has_term(model, names.velocity, material.A, "A (viscosity)", n, n))
-    add_product(material.A, cell_strain(model, names.velocity), 1, stress);
-  if (has_term(model, names.displacement, material.B, "B (elasticity)", n, n))
-    add_product(material.B, cell_strain(model, names.displacement), 1, stress);
-  if (has_term(model, names.potential, material.E, "E (piezoelectric)", dim, n))
-    add_product(material.E.transpose(), potential_gradient(model, names.potential), 1, stress);
+  if (const auto* A = term_tensor(model, names.velocity, "A", "viscosity", n, n, /*optional=*/true))
+    add_product(*A, cell_strain(model, names.velocity), 1, stress);
+  if (const auto* B = term_tensor(model, names.displacement, "B", "elasticity", n, n))
+    add_product(*B, cell_strain(model, names.displacement), 1, stress);
+  if (const auto* E = term_tensor(model, names.potential, "E", "piezoelectric", dim, n))
+    add_product(E->transpose(), potential_gradient(model, names.potential), 1, stress);
   return stress;
 }
 
@@ -120,15 +121,14 @@ std::vector<double> cell_electric_field(const Model& model, const std::string& p
   return field;
 }
 
-std::vector<double> cell_electric_displacement(const Model& model, const PiezoMaterial& material,
-                                               const PiezoFieldNames& names) {
+std::vector<double> cell_electric_displacement(const Model& model, const PiezoFieldNames& names) {
   const int dim = model.mesh().dim();
   const int n = voigt_size(dim);
   std::vector<double> displacement(size_t(model.mesh().num_cells()) * dim, 0.0);
-  if (has_term(model, names.displacement, material.E, "E (piezoelectric)", dim, n))
-    add_product(material.E, cell_strain(model, names.displacement), 1, displacement);
-  if (has_term(model, names.potential, material.beta, "beta (permittivity)", dim, dim))
-    add_product(material.beta, potential_gradient(model, names.potential), -1, displacement);
+  if (const auto* E = term_tensor(model, names.displacement, "E", "piezoelectric", dim, n))
+    add_product(*E, cell_strain(model, names.displacement), 1, displacement);
+  if (const auto* beta = term_tensor(model, names.potential, "beta", "permittivity", dim, dim))
+    add_product(*beta, potential_gradient(model, names.potential), -1, displacement);
   return displacement;
 }
 
@@ -140,8 +140,7 @@ double von_mises(std::span<const double> s, int dim) {
   return std::sqrt(normal / 2 + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
 }
 
-void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoMaterial& material,
-                      const PiezoFieldNames& names) {
+void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoFieldNames& names) {
   const int dim = model.mesh().dim();
   const int n = voigt_size(dim);
   for (const std::string& name : {names.velocity, names.displacement, names.potential})
@@ -149,7 +148,7 @@ void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoMaterial
 
   if (model.has_field(names.displacement)) writer.add_cell_data("strain", n, cell_strain(model, names.displacement));
   if (model.has_field(names.displacement) || model.has_field(names.velocity)) {
-    std::vector<double> stress = cell_stress(model, material, names);
+    std::vector<double> stress = cell_stress(model, names);
     std::vector<double> equivalent(size_t(model.mesh().num_cells()));
     for (size_t cell = 0; cell < equivalent.size(); ++cell)
       equivalent[cell] = von_mises(std::span<const double>(stress).subspan(cell * n, n), dim);
@@ -158,7 +157,7 @@ void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoMaterial
   }
   if (model.has_field(names.potential)) {
     writer.add_cell_data("electric_field", dim, cell_electric_field(model, names.potential));
-    writer.add_cell_data("electric_displacement", dim, cell_electric_displacement(model, material, names));
+    writer.add_cell_data("electric_displacement", dim, cell_electric_displacement(model, names));
   }
 }
 

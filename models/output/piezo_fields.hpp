@@ -7,6 +7,11 @@
 //   electric displacement   D = E eps(u) - beta grad phi
 // Voigt orders and tensor shapes are those of bricks/voigt.hpp. Cells outside a field's space get zero
 // contributions from that field (VTK has no partial fields).
+//
+// The tensors are the model's constants, read at each call so that a constant changed in the model shows
+// in the output: "A" (viscosity, n x n), "B" (elasticity, n x n), "E" (piezoelectric, dim x n) and "beta"
+// (permittivity, dim x dim). A term is there when the model has its field, and its tensor is then
+// required, except A: a model without "A" has no viscosity.
 #include <span>
 #include <string>
 #include <vector>
@@ -18,16 +23,7 @@
 
 namespace pc {
 
-// A tensor left empty drops its term: no A for a purely elastic body, no E and beta for a purely
-// mechanical one. A zero tensor is allowed.
-struct PiezoMaterial {
-  Eigen::MatrixXd A;     // viscosity, n x n
-  Eigen::MatrixXd B;     // elasticity, n x n
-  Eigen::MatrixXd E;     // piezoelectric, dim x n
-  Eigen::MatrixXd beta;  // permittivity, dim x dim
-};
-
-// The model's field names; a term whose field the model does not have is dropped, like an empty tensor.
+// The model's field names; a term whose field the model does not have is dropped.
 struct PiezoFieldNames {
   std::string velocity = "v";
   std::string displacement = "u";
@@ -37,12 +33,11 @@ struct PiezoFieldNames {
 // num_cells * n values (n = 3 in 2D, 6 in 3D). The field must be a vector field.
 std::vector<double> cell_strain(const Model& model, const std::string& displacement = "u");
 // num_cells * n values.
-std::vector<double> cell_stress(const Model& model, const PiezoMaterial& material, const PiezoFieldNames& names = {});
+std::vector<double> cell_stress(const Model& model, const PiezoFieldNames& names = {});
 // num_cells * dim values. The field must be a scalar field.
 std::vector<double> cell_electric_field(const Model& model, const std::string& potential = "phi");
 // num_cells * dim values.
-std::vector<double> cell_electric_displacement(const Model& model, const PiezoMaterial& material,
-                                               const PiezoFieldNames& names = {});
+std::vector<double> cell_electric_displacement(const Model& model, const PiezoFieldNames& names = {});
 
 // Von Mises equivalent stress of a Voigt stress (n values). In 3D the standard
 //   sqrt(((sxx - syy)^2 + (syy - szz)^2 + (szz - sxx)^2) / 2 + 3 (syz^2 + sxz^2 + sxy^2)).
@@ -54,7 +49,6 @@ double von_mises(std::span<const double> stress, int dim);
 // Adds the point fields velocity, displacement and potential (those the model has) and the cell data
 // "strain" (with a displacement), "stress" and "von_mises" (with a displacement or a velocity), and
 // "electric_field" and "electric_displacement" (with a potential).
-void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoMaterial& material,
-                      const PiezoFieldNames& names = {});
+void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoFieldNames& names = {});
 
 }  // namespace pc

@@ -46,11 +46,9 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
 
   m.set_constant("B", spec.B);
   m.add_brick(std::make_shared<ElasticityBrick>(spec.body));
-  built.material.B = spec.B;
   if (viscous) {
     m.set_constant("A", spec.A);
     m.add_brick(std::make_shared<ViscosityBrick>(spec.body));
-    built.material.A = spec.A;
   }
   if (inertia) {
     m.set_constant("rho", spec.rho);
@@ -61,8 +59,6 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
     m.set_constant("beta", spec.beta);
     m.add_brick(std::make_shared<PiezoelectricCouplingBrick>(spec.body));
     m.add_brick(std::make_shared<PermittivityBrick>(spec.body));
-    built.material.E = spec.E;
-    built.material.beta = spec.beta;
   }
   for (const std::string& region : spec.clamped)
     m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", region)));

@@ -21,7 +21,6 @@
 #include "bricks/normal_pressure.hpp"
 #include "bricks/source_bricks.hpp"
 #include "models/model.hpp"
-#include "models/output/piezo_fields.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {
@@ -59,7 +58,6 @@ struct PiezoContactSpec {
 struct PiezoContactModel {
   std::unique_ptr<Model> model;
   std::unique_ptr<TimeScheme> scheme;  // the one spec.scheme names, attached
-  PiezoMaterial material;
   bool electric = false;
   // The contact surface's normal brick (null without contact): what the output reads p_nu from, with the
   // field its law reads, at the surface's nodes and their own normals.

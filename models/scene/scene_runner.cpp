@@ -14,6 +14,7 @@
 #include "bricks/law_registry.hpp"
 #include "models/output/boundary_table.hpp"
 #include "models/output/csv_log.hpp"
+#include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
 
 namespace pc {
@@ -113,7 +114,7 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
                          electric ? at("phi", 0, x) : 0.0});
   }
   write_csv(dir + "/final_nodes.csv", {"node", "x", "y", "ux", "uy", "vx", "vy", "phi"}, node_rows);
-  const std::vector<double> stress = cell_stress(m, built.material);
+  const std::vector<double> stress = cell_stress(m);
   const int voigt = 3;
   std::vector<std::vector<double>> cell_rows;
   for (int c = 0; c < mesh.num_cells(); ++c) {
@@ -256,7 +257,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     if (r.step == 0) add_phases(r.newton);  // the initial potential's solve (empty without a potential)
     if (!series) return;
     VtuWriter writer(mesh);
-    add_piezo_output(writer, model, built.material);
+    add_piezo_output(writer, model);
     writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
     series->write(r.step, r.time, writer);
   };

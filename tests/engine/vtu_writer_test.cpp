@@ -1,13 +1,14 @@
 // The .vtu files are parsed back (base64 arrays decoded) and compared with the mesh and with the fields'
-// exact values at the nodes; the .pvd collection is read back as text.
+// exact values at the nodes, for quadratic cells also with VTK's node order; the .pvd collection is read
+// back as text.
 #include "support/error_and_temp_dir.hpp"
 #include "assembly/vtu_writer.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdint>
-#include <cstring>
 #include <functional>
 #include <filesystem>
 #include <fstream>
@@ -18,101 +19,16 @@
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "support/test_helpers.hpp"
+#include "support/vtu_reader.hpp"
 
 namespace pc {
 namespace {
 
 namespace fs = std::filesystem;
 
+using testing::DataArray;
+using testing::find_array;
 using testing::read_text;
-
-std::string base64_decode(const std::string& text) {
-  auto sextet = [](char c) -> int {
-    if (c >= 'A' && c <= 'Z') return c - 'A';
-    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-    if (c >= '0' && c <= '9') return c - '0' + 52;
-    if (c == '+') return 62;
-    if (c == '/') return 63;
-    return -1;
-  };
-  std::string bytes;
-  std::uint32_t group = 0;
-  int bits = 0;
-  for (char c : text) {
-    const int value = sextet(c);
-    if (value < 0) continue;  // padding and whitespace
-    group = (group << 6) | std::uint32_t(value);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      bytes.push_back(static_cast<char>((group >> bits) & 0xff));
-    }
-  }
-  return bytes;
-}
-
-std::uint64_t little_endian(const std::string& bytes, size_t at, int size) {
-  std::uint64_t value = 0;
-  for (int b = size - 1; b >= 0; --b) value = (value << 8) | static_cast<unsigned char>(bytes[at + b]);
-  return value;
-}
-
-struct DataArray {
-  std::string type;
-  int components = 0;
-  std::string bytes;  // decoded payload without the UInt64 header
-
-  std::vector<double> doubles() const {
-    std::vector<double> values(bytes.size() / 8);
-    for (size_t i = 0; i < values.size(); ++i) {
-      const std::uint64_t bits = little_endian(bytes, 8 * i, 8);
-      std::memcpy(&values[i], &bits, 8);
-    }
-    return values;
-  }
-  std::vector<std::int64_t> int64s() const {
-    std::vector<std::int64_t> values(bytes.size() / 8);
-    for (size_t i = 0; i < values.size(); ++i) values[i] = std::int64_t(little_endian(bytes, 8 * i, 8));
-    return values;
-  }
-};
-
-std::string attribute(const std::string& tag, const std::string& name) {
-  const std::string key = " " + name + "=\"";
-  const size_t start = tag.find(key);
-  if (start == std::string::npos) return "";
-  const size_t begin = start + key.size();
-  return tag.substr(begin, tag.find('"', begin) - begin);
-}
-
-// The array of the given name inside the element <section> ... </section> of a .vtu text.
-DataArray find_array(const std::string& vtu, const std::string& section, const std::string& name) {
-  const size_t section_begin = vtu.find("<" + section + ">");
-  const size_t section_end = vtu.find("</" + section + ">");
-  if (section_begin == std::string::npos || section_end == std::string::npos) {
-    ADD_FAILURE() << "no section " << section;
-    return {};
-  }
-  const size_t name_at = vtu.find("Name=\"" + name + "\"", section_begin);
-  if (name_at == std::string::npos || name_at > section_end) {
-    ADD_FAILURE() << "no array " << name << " in " << section;
-    return {};
-  }
-  const size_t tag_begin = vtu.rfind("<DataArray", name_at);
-  const size_t tag_end = vtu.find('>', name_at);
-  const std::string tag = vtu.substr(tag_begin, tag_end - tag_begin);
-  EXPECT_EQ(attribute(tag, "format"), "binary");
-  const size_t data_end = vtu.find("</DataArray>", tag_end);
-  const std::string decoded = base64_decode(vtu.substr(tag_end + 1, data_end - tag_end - 1));
-
-  DataArray array;
-  array.type = attribute(tag, "type");
-  array.components = std::stoi(attribute(tag, "NumberOfComponents"));
-  EXPECT_GE(decoded.size(), 8u);
-  EXPECT_EQ(little_endian(decoded, 0, 8), decoded.size() - 8) << "header byte count of " << name;
-  array.bytes = decoded.substr(8);
-  return array;
-}
 
 // The mesh part of a .vtu: piece sizes, points (z = 0 in 2D), connectivity, offsets and cell types.
 void expect_mesh(const std::string& vtu, const Mesh& mesh, int vtk_type) {
@@ -168,14 +84,14 @@ using testing::expect_error_containing;
 class VtuWriterTest : public testing::TemporaryDirectoryTest {};
 
 const auto linear = [](const double* x, double* out) { out[0] = 1 + 2 * x[0] - 3 * x[1]; };
-const auto quadratic_vector = [](const double* x, double* out) {
-  out[0] = x[0] * x[0] + x[1];
-  out[1] = x[0] * x[1] - 1;
+const auto linear_vector = [](const double* x, double* out) {
+  out[0] = 2 * x[0] + x[1];
+  out[1] = 0.5 - x[1];
 };
 
 TEST_F(VtuWriterTest, TrianglesWithScalarVectorAndCellData) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 3, 2, Shape::Triangle));
-  FESpace p1(mesh, 1, 1), p2(mesh, 2, 2);
+  FESpace p1(mesh, 1, 1), p1_vector(mesh, 1, 2);
   std::vector<double> cell_ids(mesh->num_cells()), pairs(2 * mesh->num_cells());
   for (int c = 0; c < mesh->num_cells(); ++c) {
     cell_ids[c] = c;
@@ -185,7 +101,7 @@ TEST_F(VtuWriterTest, TrianglesWithScalarVectorAndCellData) {
 
   VtuWriter writer(*mesh);
   writer.add_point_field("phi", p1, p1.interpolate(linear));
-  writer.add_point_field("u", p2, p2.interpolate(quadratic_vector));
+  writer.add_point_field("u", p1_vector, p1_vector.interpolate(linear_vector));
   writer.add_cell_data("cell", 1, cell_ids);
   writer.add_cell_data("pair", 2, pairs);
   const fs::path path = directory_ / "triangles.vtu";
@@ -196,25 +112,11 @@ TEST_F(VtuWriterTest, TrianglesWithScalarVectorAndCellData) {
   expect_mesh(vtu, *mesh, 5);
   expect_point_values(vtu, *mesh, "phi", 1, linear);
   // A 2D vector is padded with a zero z component.
-  expect_point_values(vtu, *mesh, "u", 3, quadratic_vector);
+  expect_point_values(vtu, *mesh, "u", 3, linear_vector);
   EXPECT_EQ(find_array(vtu, "CellData", "cell").doubles(), cell_ids);
   const DataArray pair_array = find_array(vtu, "CellData", "pair");
   EXPECT_EQ(pair_array.components, 2);
   EXPECT_EQ(pair_array.doubles(), pairs);
-}
-
-TEST_F(VtuWriterTest, QuadrilateralsWithQ2Field) {
-  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({-1, 0}, {1, 3}, 2, 3, Shape::Quadrilateral));
-  FESpace q2(mesh, 2, 1);
-  const auto f = [](const double* x, double* out) { out[0] = x[0] * x[0] * x[1] - x[1] * x[1]; };
-  VtuWriter writer(*mesh);
-  writer.add_point_field("q", q2, q2.interpolate(f));
-  const fs::path path = directory_ / "quads.vtu";
-  writer.write(path.string());
-
-  const std::string vtu = read_text(path);
-  expect_mesh(vtu, *mesh, 9);
-  expect_point_values(vtu, *mesh, "q", 1, f);
 }
 
 TEST_F(VtuWriterTest, TetrahedraWithVectorField) {
@@ -275,6 +177,216 @@ TEST_F(VtuWriterTest, NodesOutsideTheSpaceRegionGetZero) {
     else
       out[0] = 0;
   });
+}
+
+// ---- quadratic files ----------------------------------------------------------------------------
+
+// VTK's quadratic cells, written down from VTK (vtkQuadraticTriangle, vtkBiQuadraticQuad,
+// vtkQuadraticTetra, vtkTriQuadraticHexahedron) independently of shape.cpp: the parametric coordinates of
+// the corners, and for every further node the corners whose mean it is (its edge, face or cell).
+struct VtkQuadraticCell {
+  Shape shape;
+  int type;
+  std::vector<std::array<double, 3>> corners;
+  std::vector<std::vector<int>> means;
+};
+
+std::vector<VtkQuadraticCell> vtk_quadratic_cells() {
+  const std::vector<std::array<double, 3>> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  std::vector<std::array<double, 3>> cube = square;
+  for (const auto& p : square) cube.push_back({p[0], p[1], 1});
+  return {
+      {Shape::Triangle, 22, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1}, {1, 2}, {2, 0}}},
+      {Shape::Quadrilateral, 28, square, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 1, 2, 3}}},
+      {Shape::Tetrahedron, 24, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+       {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}}},
+      // Faces in the order of VTK's parametric coordinates: x = 0, x = 1, y = 0, y = 1, z = 0, z = 1.
+      {Shape::Hexahedron, 29, cube,
+       {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
+        {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7},
+        {0, 1, 2, 3, 4, 5, 6, 7}}},
+  };
+}
+
+// The mean of the given points.
+std::array<double, 3> mean_of(const std::vector<std::array<double, 3>>& points, const std::vector<int>& which) {
+  std::array<double, 3> mean{0, 0, 0};
+  for (int k : which)
+    for (int d = 0; d < 3; ++d) mean[d] += points[k][d] / double(which.size());
+  return mean;
+}
+
+// The nodes of a VTK cell: its corners, then the means.
+std::vector<std::array<double, 3>> vtk_nodes(const VtkQuadraticCell& cell,
+                                             const std::vector<std::array<double, 3>>& corners) {
+  std::vector<std::array<double, 3>> nodes = corners;
+  for (const auto& which : cell.means) nodes.push_back(mean_of(corners, which));
+  return nodes;
+}
+
+TEST(VtkQuadraticCells, NodesAreTheOrderTwoElementsDofsInTheirLocalOrder) {
+  for (const VtkQuadraticCell& cell : vtk_quadratic_cells()) {
+    SCOPED_TRACE(to_string(cell.shape));
+    const ReferenceElement& element = ReferenceElement::get(cell.shape, 2);
+    const auto nodes = vtk_nodes(cell, cell.corners);
+    ASSERT_EQ(element.num_dofs(), int(nodes.size()));
+    for (int i = 0; i < element.num_dofs(); ++i) EXPECT_EQ(element.dof_point(i), nodes[i]) << "node " << i;
+  }
+}
+
+// A mesh of the shape with its nodes moved by a smooth map, so that its cells are neither translates of
+// one another nor, for quadrilaterals and hexahedra, parallelograms.
+std::shared_ptr<const Mesh> distorted_mesh(Shape shape) {
+  const int dim = dimension(shape);
+  const Mesh base = dim == 2 ? rectangle_mesh({0, 0}, {1, 1}, 3, 2, shape)
+                             : box_mesh({0, 0, 0}, {1, 1, 1}, 2, 2, 2, shape);
+  std::vector<double> x = base.coordinates();
+  for (int n = 0; n < base.num_nodes(); ++n) {
+    double* p = x.data() + size_t(n) * dim;
+    const double px = p[0], py = p[1], pz = dim == 3 ? p[2] : 0.0;
+    p[0] = px + 0.15 * py * py;
+    p[1] = py + 0.1 * px * px + 0.05 * pz;
+    if (dim == 3) p[2] = pz + 0.1 * px * py;
+  }
+  return std::make_shared<const Mesh>(dim, shape, std::move(x), base.connectivity());
+}
+
+// A full quadratic polynomial (z = 0 in 2D), and a vector of quadratics with one component per dimension.
+const auto quadratic = [](const double* x, double* out) {
+  out[0] = 1 + x[0] - 2 * x[1] + 3 * x[0] * x[1] + x[0] * x[0] - 2 * x[1] * x[1];
+};
+const auto quadratic_3d = [](const double* x, double* out) {
+  quadratic(x, out);
+  out[0] += 0.5 * x[2] - x[1] * x[2] + x[2] * x[2];
+};
+const auto quadratic_vector = [](const double* x, double* out) {
+  out[0] = x[0] * x[1] - 1;
+  out[1] = x[0] * x[0] + x[1];
+  out[2] = x[2] * x[0] - x[1] * x[1];
+};
+
+// The written points (3 coordinates each).
+std::vector<std::array<double, 3>> read_points(const std::string& vtu) {
+  const auto xyz = find_array(vtu, "Points", "Points").doubles();
+  std::vector<std::array<double, 3>> points(xyz.size() / 3);
+  for (size_t p = 0; p < points.size(); ++p) points[p] = {xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]};
+  return points;
+}
+
+// Point data must equal f at every written point, to round-off.
+void expect_values_at_points(const std::string& vtu, const std::string& name, int components,
+                             const std::function<void(const double* x, double* out)>& f) {
+  const auto points = read_points(vtu);
+  const DataArray array = find_array(vtu, "PointData", name);
+  ASSERT_EQ(array.components, components) << name;
+  const auto values = array.doubles();
+  ASSERT_EQ(values.size(), points.size() * components) << name;
+  for (size_t p = 0; p < points.size(); ++p) {
+    double exact[3] = {0, 0, 0};
+    f(points[p].data(), exact);
+    for (int k = 0; k < components; ++k)
+      EXPECT_NEAR(values[p * components + k], exact[k], 1e-13) << name << " point " << p << " component " << k;
+  }
+}
+
+TEST_F(VtuWriterTest, QuadraticFieldsAreWrittenAtTheirDofsAsQuadraticCellsOnEveryShape) {
+  for (const VtkQuadraticCell& cell : vtk_quadratic_cells()) {
+    SCOPED_TRACE(to_string(cell.shape));
+    const auto mesh = distorted_mesh(cell.shape);
+    const int dim = mesh->dim();
+    const FESpace scalars(mesh, 2, 1), vectors(mesh, 2, dim);
+    const auto f = dim == 2 ? std::function<void(const double*, double*)>(quadratic) : quadratic_3d;
+    // The vector field's interpolant sees dim coordinates: give it a zero z in 2D.
+    const auto g = [&](const double* x, double* out) {
+      const double p[3] = {x[0], x[1], dim == 3 ? x[2] : 0.0};
+      double all[3];
+      quadratic_vector(p, all);
+      for (int k = 0; k < dim; ++k) out[k] = all[k];
+    };
+    VtuWriter writer(*mesh);
+    writer.add_point_field("f", scalars, scalars.interpolate(f));
+    writer.add_point_field("g", vectors, vectors.interpolate(g));
+    const fs::path path = directory_ / "quadratic.vtu";
+    writer.write(path.string());
+    const std::string vtu = read_text(path);
+
+    // One point per P2/Q2 dof, each cell a VTK quadratic cell.
+    EXPECT_NE(vtu.find(message("NumberOfPoints=\"", scalars.num_scalar_dofs(), "\" NumberOfCells=\"",
+                               mesh->num_cells(), "\"")),
+              std::string::npos);
+    const auto points = read_points(vtu);
+    ASSERT_EQ(points.size(), size_t(scalars.num_scalar_dofs()));
+    const DataArray types = find_array(vtu, "Cells", "types");
+    ASSERT_EQ(types.bytes.size(), size_t(mesh->num_cells()));
+    for (char t : types.bytes) EXPECT_EQ(static_cast<unsigned char>(t), cell.type);
+    const int per_cell = num_vertices(cell.shape) + int(cell.means.size());
+    const auto ends = find_array(vtu, "Cells", "offsets").int64s();
+    ASSERT_EQ(ends.size(), size_t(mesh->num_cells()));
+    for (int c = 0; c < mesh->num_cells(); ++c) EXPECT_EQ(ends[c], std::int64_t(c + 1) * per_cell);
+
+    // In VTK's order, a cell's nodes are its vertices, then the means of its vertices that VTK names.
+    const auto connectivity = find_array(vtu, "Cells", "connectivity").int64s();
+    ASSERT_EQ(connectivity.size(), size_t(mesh->num_cells()) * per_cell);
+    for (int c = 0; c < mesh->num_cells(); ++c) {
+      std::vector<std::array<double, 3>> corners;
+      for (int n : mesh->cell(c)) {
+        std::array<double, 3> x{0, 0, 0};
+        for (int d = 0; d < dim; ++d) x[d] = mesh->node(n)[d];
+        corners.push_back(x);
+      }
+      const auto expected = vtk_nodes(cell, corners);
+      for (int i = 0; i < per_cell; ++i) {
+        const std::int64_t p = connectivity[size_t(c) * per_cell + i];
+        ASSERT_GE(p, 0);
+        ASSERT_LT(p, std::int64_t(points.size()));
+        for (int d = 0; d < 3; ++d)
+          EXPECT_NEAR(points[p][d], expected[i][d], 1e-14) << "cell " << c << " node " << i << " axis " << d;
+      }
+    }
+
+    // A field of the space is its polynomial at every point.
+    expect_values_at_points(vtu, "f", 1, f);
+    expect_values_at_points(vtu, "g", 3, [&](const double* x, double* out) {
+      quadratic_vector(x, out);
+      if (dim == 2) out[2] = 0;  // a 2D vector is padded with a zero z component
+    });
+  }
+}
+
+TEST_F(VtuWriterTest, LinearDataInAQuadraticFileIsTheirInterpolantAndZeroOutsideTheirCells) {
+  Mesh left_right = rectangle_mesh({0, 0}, {4, 1}, 4, 2, Shape::Triangle);
+  std::vector<int> left_cells;
+  for (int c = 0; c < left_right.num_cells(); ++c) {
+    double centre = 0;
+    for (int n : left_right.cell(c)) centre += left_right.node(n)[0] / 3;
+    if (centre < 2) left_cells.push_back(c);
+  }
+  left_right.add_cell_region("west_half", left_cells);
+  auto mesh = std::make_shared<const Mesh>(std::move(left_right));
+  const FESpace p1_west(mesh, 1, 1, "west_half"), p2_west(mesh, 2, 1, "west_half");
+  std::vector<double> at_nodes(mesh->num_nodes());
+  for (int n = 0; n < mesh->num_nodes(); ++n) linear(mesh->node(n).data(), &at_nodes[n]);
+
+  VtuWriter writer(*mesh);
+  // Linear data before and after the field that makes the file quadratic.
+  writer.add_point_field("p1", p1_west, p1_west.interpolate(linear));
+  writer.add_point_field("p2", p2_west, p2_west.interpolate(quadratic));
+  writer.add_point_data("nodes", 1, at_nodes);
+  const fs::path path = directory_ / "mixed.vtu";
+  writer.write(path.string());
+  const std::string vtu = read_text(path);
+
+  const auto west = [](auto f) {
+    return [f](const double* x, double* out) {
+      if (x[0] <= 2)
+        f(x, out);
+      else
+        out[0] = 0;
+    };
+  };
+  expect_values_at_points(vtu, "p1", 1, west(linear));
+  expect_values_at_points(vtu, "p2", 1, west(quadratic));
+  expect_values_at_points(vtu, "nodes", 1, linear);
 }
 
 TEST_F(VtuWriterTest, RewritingReplacesTheFile) {

@@ -20,7 +20,9 @@
 #include "models/model.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
+#include "support/piezo_material.hpp"
 #include "support/test_helpers.hpp"
+#include "support/vtu_reader.hpp"
 
 namespace pc {
 namespace {
@@ -234,8 +236,8 @@ void expect_cells_equal(const std::vector<double>& values, const Eigen::VectorXd
           << what << " cell " << c << " entry " << k;
 }
 
-PiezoMaterial material_2d() {
-  PiezoMaterial m;
+testing::PiezoTensors material_2d() {
+  testing::PiezoTensors m;
   m.A = 0.1 * isotropic_stiffness(2, 2.0, 1.0);
   m.B = isotropic_stiffness(2, 3.0, 2.0);
   m.E.resize(2, 3);
@@ -245,9 +247,17 @@ PiezoMaterial material_2d() {
   return m;
 }
 
+// The tensors as the model's constants, where the output reads them.
+void set_constants(Model& model, const testing::PiezoTensors& m) {
+  model.set_constant("A", m.A);
+  model.set_constant("B", m.B);
+  model.set_constant("E", m.E);
+  model.set_constant("beta", m.beta);
+}
+
 TEST(PiezoFields, LinearFieldsGiveExactCellValuesOnEveryShapeAndOrder) {
   const LinearFields f = fields_2d();
-  const PiezoMaterial m = material_2d();
+  const testing::PiezoTensors m = material_2d();
   const Eigen::VectorXd eps_u = voigt_strain(f.G);
   const Eigen::VectorXd eps_v = voigt_strain(f.H);
   for (Shape shape : {Shape::Triangle, Shape::Quadrilateral})
@@ -255,11 +265,12 @@ TEST(PiezoFields, LinearFieldsGiveExactCellValuesOnEveryShapeAndOrder) {
       SCOPED_TRACE(message(to_string(shape), " order ", order));
       auto mesh = std::make_shared<const Mesh>(rectangle_mesh({-1, 0}, {2, 1.5}, 4, 3, shape));
       const auto model = linear_model(mesh, order, f, true);
+      set_constants(*model, m);
       const int cells = mesh->num_cells();
       expect_cells_equal(cell_strain(*model, "u"), eps_u, cells, "strain");
-      expect_cells_equal(cell_stress(*model, m), m.A * eps_v + m.B * eps_u + m.E.transpose() * f.p, cells, "stress");
+      expect_cells_equal(cell_stress(*model), m.A * eps_v + m.B * eps_u + m.E.transpose() * f.p, cells, "stress");
       expect_cells_equal(cell_electric_field(*model, "phi"), -f.p, cells, "electric field");
-      expect_cells_equal(cell_electric_displacement(*model, m), m.E * eps_u - m.beta * f.p, cells,
+      expect_cells_equal(cell_electric_displacement(*model), m.E * eps_u - m.beta * f.p, cells,
                          "electric displacement");
     }
 }
@@ -268,10 +279,39 @@ TEST(PiezoFields, MechanicalModelStressIsElasticStress) {
   const LinearFields f = fields_2d();
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 3, 2));
   const auto model = linear_model(mesh, 1, f, false);
-  PiezoMaterial m = material_2d();
-  m.A.resize(0, 0);  // no viscosity; E and beta are dropped since the model has no potential
-  expect_cells_equal(cell_stress(*model, m), m.B * voigt_strain(f.G), mesh->num_cells(), "stress");
-  expect_cells_equal(cell_electric_displacement(*model, m), m.E * voigt_strain(f.G), mesh->num_cells(), "D");
+  const testing::PiezoTensors m = material_2d();
+  // No "A": no viscosity. Without a potential, "beta" is not needed and "E" only for D = E eps(u).
+  model->set_constant("B", m.B);
+  model->set_constant("E", m.E);
+  expect_cells_equal(cell_stress(*model), m.B * voigt_strain(f.G), mesh->num_cells(), "stress");
+  expect_cells_equal(cell_electric_displacement(*model), m.E * voigt_strain(f.G), mesh->num_cells(), "D");
+}
+
+TEST_F(OutputTest, AConstantChangedInTheModelShowsInTheWrittenStress) {
+  const LinearFields f = fields_2d();
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 3, 2));
+  const auto model = linear_model(mesh, 1, f, false);
+  const Eigen::MatrixXd B = material_2d().B;
+  model->set_constant("B", B);
+  const auto written = [&](const std::string& file, const std::string& name) {
+    VtuWriter writer(*mesh);
+    add_piezo_output(writer, *model);
+    writer.write((directory_ / file).string());
+    return testing::find_array(read_text(directory_ / file), "CellData", name).doubles();
+  };
+  const std::vector<double> stress = written("before.vtu", "stress");
+  const std::vector<double> equivalent = written("before.vtu", "von_mises");
+  expect_cells_equal(stress, B * voigt_strain(f.G), mesh->num_cells(), "stress before");
+
+  // Without a viscosity or a potential, the stress is B eps(u): it scales with B, and so does von Mises.
+  model->set_constant("B", 2.5 * B);
+  const std::vector<double> scaled = written("after.vtu", "stress");
+  const std::vector<double> scaled_equivalent = written("after.vtu", "von_mises");
+  ASSERT_EQ(scaled.size(), stress.size());
+  for (size_t k = 0; k < stress.size(); ++k) EXPECT_NEAR(scaled[k], 2.5 * stress[k], 1e-12) << "entry " << k;
+  ASSERT_EQ(scaled_equivalent.size(), equivalent.size());
+  for (size_t c = 0; c < equivalent.size(); ++c)
+    EXPECT_NEAR(scaled_equivalent[c], 2.5 * equivalent[c], 1e-12) << "cell " << c;
 }
 
 TEST(PiezoFields, StrainIn3DFollowsTheVoigtOrder) {
@@ -286,14 +326,18 @@ TEST(PiezoFields, StrainIn3DFollowsTheVoigtOrder) {
   expect_cells_equal(cell_strain(*model, "u"), expected, mesh->num_cells(), "strain");
 }
 
-TEST(PiezoFields, WrongFieldsAndTensorsAreNamed) {
+TEST(PiezoFields, WrongFieldsAndMissingOrMisshapenConstantsAreNamed) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2));
   const auto model = linear_model(mesh, 1, fields_2d(), true);
   expect_error_containing([&] { cell_strain(*model, "phi"); }, {"'phi'", "1 components", "expected 2"});
   expect_error_containing([&] { cell_electric_field(*model, "u"); }, {"'u'", "2 components"});
-  PiezoMaterial m;
-  m.B = isotropic_stiffness(3, 1.0, 1.0);
-  expect_error_containing([&] { cell_stress(*model, m); }, {"B (elasticity)", "6 x 6", "3 x 3"});
+  expect_error_containing([&] { cell_stress(*model); }, {"field 'u'", "constant 'B' (elasticity)"});
+  model->set_constant("B", isotropic_stiffness(3, 1.0, 1.0));
+  expect_error_containing([&] { cell_stress(*model); }, {"'B' (elasticity)", "6 x 6", "3 x 3"});
+  model->set_constant("B", material_2d().B);
+  expect_error_containing([&] { cell_stress(*model); }, {"field 'phi'", "constant 'E' (piezoelectric)"});
+  model->set_constant("E", material_2d().E);
+  expect_error_containing([&] { cell_electric_displacement(*model); }, {"constant 'beta' (permittivity)"});
 }
 
 TEST(VonMises, UniaxialStressIsItsMagnitudeAndShearScalesBySqrt3) {
@@ -329,8 +373,9 @@ TEST_F(OutputTest, AddPiezoOutputWritesThePresentFields) {
   };
   {
     const auto model = linear_model(mesh, 2, fields_2d(), true);
+    set_constants(*model, material_2d());
     VtuWriter writer(*mesh);
-    add_piezo_output(writer, *model, material_2d());
+    add_piezo_output(writer, *model);
     writer.write((directory_ / "piezo.vtu").string());
     const std::string text = read_text(directory_ / "piezo.vtu");
     for (const char* name : {"v", "u", "phi", "strain", "stress", "von_mises", "electric_field",
@@ -339,8 +384,9 @@ TEST_F(OutputTest, AddPiezoOutputWritesThePresentFields) {
   }
   {
     const auto model = linear_model(mesh, 1, fields_2d(), false);
+    model->set_constant("B", material_2d().B);
     VtuWriter writer(*mesh);
-    add_piezo_output(writer, *model, material_2d());
+    add_piezo_output(writer, *model);
     writer.write((directory_ / "mechanical.vtu").string());
     const std::string text = read_text(directory_ / "mechanical.vtu");
     for (const char* name : {"v", "u", "strain", "stress", "von_mises"}) EXPECT_TRUE(has_array(text, name)) << name;
