@@ -13,6 +13,7 @@
 #include "models/output/boundary_table.hpp"
 #include "models/output/csv_log.hpp"
 #include "models/output/result_series.hpp"
+#include "models/piezo/initial_potential.hpp"
 
 namespace pc {
 namespace {
@@ -204,6 +205,7 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
     series = std::make_unique<ResultSeries>(dir, scene.name);
   }
   StepperCallbacks callbacks;
+  callbacks.on_start = [&](Model& model) { return solve_initial_potential(model, *built.scheme, newton); };
   auto add_phases = [&](const NewtonReport& newton) {
     result.assembly_seconds += newton.assembly_seconds;
     result.factorize_seconds += newton.factorize_seconds + newton.analyze_seconds;
