@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "models/piezo/initial_potential.hpp"
 #include "models/scene/scene.hpp"
 #include "support/child_process.hpp"
 
@@ -70,6 +71,7 @@ int run_child(const std::string& variant, int nx, int ny, int steps) {
     condensation += r.condensation_seconds;
   };
   StepperCallbacks callbacks;
+  callbacks.on_start = [&](Model& model) { return solve_initial_potential(model, *built.scheme, newton); };
   callbacks.on_step = [&](const Model&, const StepRecord& r) { add(r.newton); };
   callbacks.on_output = [&](const Model&, const StepRecord& r) {
     if (r.step == 0) add(r.newton);  // the initial potential's solve (empty without a potential)

@@ -30,6 +30,7 @@
 #include "bricks/testing/law_checker.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "models/model.hpp"
+#include "models/piezo/initial_potential.hpp"
 #include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
@@ -103,7 +104,9 @@ std::vector<std::pair<double, double>> potential_on_contact(const FoundationLaw&
   options.step = 0.2 / 20;
   options.prediction = Prediction::Previous;
   NewtonSolver newton;
-  const RunSummary run = Stepper(options).run(model, scheme, newton);
+  StepperCallbacks callbacks;
+  callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, scheme, newton); };  // phi_0
+  const RunSummary run = Stepper(options).run(model, scheme, newton, callbacks);
   require(run.completed, "the run stopped: ", run.message);
   std::printf("  %d steps, %d Newton iterations (at most %d per step)\n", run.steps, run.newton_iterations_total,
               run.newton_iterations_max_per_step);

@@ -34,6 +34,7 @@
 #include "models/solvers/newton.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
+#include "models/piezo/initial_potential.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 
@@ -104,6 +105,8 @@ int main(int argc, char** argv) {
     ResultSeries series(output, "paper");
 
     StepperCallbacks callbacks;
+    // Before the first step: phi_0 from the electric equation at u = u_0 (the paper's initial potential).
+    callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, scheme, newton); };
     callbacks.on_step = [&](const Model& m, const StepRecord& step) {
       if (step.step % 10 != 0) return;
       const double u_y = evaluate_at(m.space("u"), m.values("u"), locator, corner)[1];

@@ -576,11 +576,39 @@ void Model::assemble(bool tangent) {
   for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
 }
 
+std::vector<ProblemBlock> Model::blocks() const {
+  const DofLayout& l = layout();
+  std::vector<ProblemBlock> blocks;
+  int begin = 0;
+  for (int f = 0; f < l.num_fields(); ++f) {  // a field's free dofs are numbered consecutively
+    blocks.push_back({l.field_name(f), begin, l.num_free(f)});
+    begin += l.num_free(f);
+  }
+  return blocks;
+}
+
+std::vector<double> Model::residual_scales() const {
+  const DofLayout& l = layout();
+  std::vector<double> scales;
+  for (int f = 0; f < l.num_fields(); ++f) scales.push_back(residual_scales_.at(l.field_name(f)));
+  return scales;
+}
+
 Eigen::VectorXd Model::free_values() const {
   const DofLayout& l = layout();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(l.size());
   for (const std::string& u : unknown_names_) l.add_to_global(l.field_index(u), field(u).values, x);
   return x;
+}
+
+void Model::set_free_values(const Eigen::VectorXd& x) {
+  const DofLayout& l = layout();
+  for (const std::string& u : unknown_names_) {
+    const auto global = l.global_indices(l.field_index(u));
+    Eigen::VectorXd& values = field(u).values;
+    for (int d = 0; d < int(global.size()); ++d)
+      if (global[d] >= 0) values[d] = x[global[d]];
+  }
 }
 
 void Model::add_to_free_values(const Eigen::VectorXd& step) {

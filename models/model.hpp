@@ -12,6 +12,9 @@
 // refreshed when a data field it reads or, for time-dependent bricks, the time changes. The sum of the
 // linear blocks with the scheme's factors is kept, so each Newton iteration only re-assembles the
 // nonlinear bricks (for the paper, those on the contact boundary).
+//
+// The system is what Newton solves (models/solvers/nonlinear_problem.hpp): its free values are the
+// unknowns' free dofs, one block per unknown.
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -27,12 +30,13 @@
 #include "assembly/system_matrix.hpp"
 #include "assembly/term_assembly.hpp"
 #include "bricks/brick.hpp"
+#include "models/solvers/nonlinear_problem.hpp"
 
 namespace pc {
 
 enum class FieldKind { Unknown, Data, Affine };
 
-class Model : public DataView {
+class Model : public DataView, public NonlinearProblem {
  public:
   explicit Model(std::shared_ptr<const Mesh> mesh);
   ~Model() override;
@@ -92,25 +96,28 @@ class Model : public DataView {
   void set_frozen(const std::vector<std::string>& unknowns);
   const DofLayout& layout() const;
   // Assembles the residual on the free dofs and, if asked, the Jacobian (SystemMatrix::matrix()).
-  void assemble(bool tangent);
-  const Eigen::VectorXd& residual() const { return residual_; }
-  const CsrMatrix& jacobian() const;
+  void assemble(bool tangent) override;
+  const Eigen::VectorXd& residual() const override { return residual_; }
+  const CsrMatrix& jacobian() const override;
   // The sum of the linear bricks' blocks with the current factors (the Jacobian without the nonlinear
   // bricks), with the Jacobian's pattern; its version changes only when that sum was recomputed (a new
   // step size, a changed datum), so a factorisation of it can be kept across Newton iterations and steps.
-  const CsrMatrix& linear_jacobian();
-  std::uint64_t linear_jacobian_version();
+  const CsrMatrix& linear_jacobian() override;
+  std::uint64_t linear_jacobian_version() override;
   // The free dofs (global numbering) whose rows or columns the nonlinear bricks fill: J - linear_jacobian()
   // vanishes outside these rows and columns (for the paper, the contact boundary's dofs).
-  const std::vector<int>& nonlinear_dofs();
+  const std::vector<int>& nonlinear_dofs() override;
   // Residual of one unknown in its field numbering (all dofs, constrained ones included): reactions.
   const Eigen::VectorXd& field_residual(const std::string& unknown) const;
+  // The unknowns, in the layout's order.
+  std::vector<ProblemBlock> blocks() const override;
   // Per unknown, the norm (on free dofs) of the largest single brick contribution to the last residual:
   // the scale of the forces that balance, against which round-off is measured.
-  const std::map<std::string, double>& residual_scales() const { return residual_scales_; }
+  std::vector<double> residual_scales() const override;
   // Unknowns on free dofs, and their update x <- x + step.
-  Eigen::VectorXd free_values() const;
-  void add_to_free_values(const Eigen::VectorXd& step);
+  Eigen::VectorXd free_values() const override;
+  void set_free_values(const Eigen::VectorXd& x) override;
+  void add_to_free_values(const Eigen::VectorXd& step) override;
 
   // Drops every cache, so that the next assemble() re-runs every element loop (to compare with cached
   // assembly, or after changing something the model cannot see).
@@ -121,7 +128,7 @@ class Model : public DataView {
   std::int64_t elements_assembled(int brick) const;
   // Named diagnostics evaluated after each solve (e.g. contact points in compression).
   void add_diagnostic(const std::string& name, std::function<double(const Model&)> evaluate);
-  std::map<std::string, double> diagnostics() const;
+  std::map<std::string, double> diagnostics() const override;
 
  private:
   struct Field;

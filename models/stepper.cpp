@@ -44,17 +44,10 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
 
   StepRecord record;
   record.time = o.start;
-  if (o.initial_potential && model.has_field(o.potential) && model.field_kind(o.potential) == FieldKind::Unknown) {
-    // phi_0 from the electric equation at u = u_0, v = v_0 (all mechanical unknowns frozen).
-    std::vector<std::string> frozen;
-    for (const std::string& u : model.unknowns())
-      if (u != o.potential) frozen.push_back(u);
-    scheme.freeze_displacement(model);
-    model.set_frozen(frozen);
-    record.newton = newton.solve(model);
-    model.set_frozen({});
+  if (callbacks.on_start) {
+    record.newton = callbacks.on_start(model);
     if (!record.newton.converged()) {
-      summary.message = "the initial potential did not converge: " + record.newton.message;
+      summary.message = "the solve at the start did not converge: " + record.newton.message;
       return summary;
     }
   }

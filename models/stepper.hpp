@@ -1,7 +1,8 @@
 #pragma once
 // The time loop: one Newton solve per step, step cut-back on failure (down to a floor), regrowth toward
 // the nominal step after successes, a progress callback after every step and an output callback every N
-// steps (and at the start and the end), so that a long run writes its results as it goes.
+// steps (and at the start and the end), so that a long run writes its results as it goes. What a recipe
+// solves before the first step (the piezoelectric model's initial potential) is its own start hook.
 #include <functional>
 #include <string>
 
@@ -30,8 +31,6 @@ struct StepperOptions {
   int max_attempts = 0;
   double max_wall_seconds = 0;
   Prediction prediction = Prediction::Zero;
-  bool initial_potential = true;     // solve the electric equation at t = start with u = u0 (the paper's phi_0)
-  std::string potential = "phi";
 };
 
 struct StepRecord {
@@ -53,6 +52,10 @@ struct RunSummary {
 };
 
 struct StepperCallbacks {
+  // At t = start, after the Dirichlet values are applied and before the output of step 0: a solve that
+  // completes the initial state (e.g. models/piezo/initial_potential.hpp). Its report is step 0's; one
+  // that did not converge stops the run.
+  std::function<NewtonReport(Model&)> on_start;
   std::function<void(const Model&, const StepRecord&)> on_step;    // after each accepted step
   std::function<void(const Model&, const StepRecord&)> on_output;  // at output steps
 };

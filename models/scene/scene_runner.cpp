@@ -16,6 +16,7 @@
 #include "models/output/csv_log.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
+#include "models/piezo/initial_potential.hpp"
 
 namespace pc {
 namespace {
@@ -223,6 +224,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     series = std::make_unique<ResultSeries>(dir, scene.name);
   }
   StepperCallbacks callbacks;
+  callbacks.on_start = [&](Model& model) { return solve_initial_potential(model, *built.scheme, newton); };
   auto add_phases = [&](const NewtonReport& newton) {
     result.assembly_seconds += newton.assembly_seconds;
     result.factorize_seconds += newton.factorize_seconds + newton.analyze_seconds;

@@ -3,8 +3,6 @@
 #include <chrono>
 
 #include "assembly/error.hpp"
-#include "models/model.hpp"
-#include "models/solvers/newton.hpp"
 
 namespace pc {
 namespace {
@@ -25,14 +23,33 @@ Condensation condensation_from_string(const std::string& name) {
 
 std::string to_string(Condensation method) { return method == Condensation::Schur ? "schur" : "columns"; }
 
-CondensedSolve::CondensedSolve(Condensation method, std::string linear_solver)
-    : method_(method), linear_solver_name_(std::move(linear_solver)) {}
+CondensedSolve::CondensedSolve(Condensation method, std::string linear_solver, double max_fraction)
+    : method_(method), linear_solver_name_(std::move(linear_solver)), max_fraction_(max_fraction) {}
 
-void CondensedSolve::prepare(Model& model, NewtonReport& report) {
-  const std::vector<int>& nonlinear = model.nonlinear_dofs();
-  if (model_ == &model && version_ == model.linear_jacobian_version() && nonlinear_ == nonlinear) return;
-  model_ = nullptr;  // until the factorisation below succeeds
-  const CsrMatrix& A = model.linear_jacobian();
+bool CondensedSolve::applies(NonlinearProblem& problem) const {
+  if (max_fraction_ <= 0 || uncondensable_ == &problem) return false;
+  const double m = double(problem.nonlinear_dofs().size());
+  // m = 0 (a linear problem) also gains: the factorisation of A is kept from solve to solve.
+  return m <= max_fraction_ * double(problem.residual().size());
+}
+
+CondensedStep CondensedSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b) {
+  CondensedStep result;
+  // The sparse solvers report a singular matrix by throwing (assembly/linear_solver.hpp); this is the one
+  // place where that becomes the strategy's answer "does not apply to this problem".
+  try {
+    result.dx = solve(problem, b, result.cost);
+  } catch (const Error&) {
+    uncondensable_ = &problem;
+  }
+  return result;
+}
+
+void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
+  const std::vector<int>& nonlinear = problem.nonlinear_dofs();
+  if (problem_ == &problem && version_ == problem.linear_jacobian_version() && nonlinear_ == nonlinear) return;
+  problem_ = nullptr;  // until the factorisation below succeeds
+  const CsrMatrix& A = problem.linear_jacobian();
   nonlinear_ = nonlinear;
   position_.assign(A.rows(), -1);
   for (size_t i = 0; i < nonlinear_.size(); ++i) position_[nonlinear_[i]] = int(i);
@@ -42,40 +59,40 @@ void CondensedSolve::prepare(Model& model, NewtonReport& report) {
     if (!schur_) schur_ = std::make_unique<SchurComplement>();
     if (!schur_->is_analyzed_for(A, nonlinear_)) {
       schur_->analyze(A, nonlinear_);
-      report.analyze_seconds += seconds_since(t);
+      cost.analyze_seconds += seconds_since(t);
       t = Clock::now();
     }
     schur_->factorize(A);
-    report.factorize_seconds += seconds_since(t);
+    cost.factorize_seconds += seconds_since(t);
     t = Clock::now();
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur_->schur());
     schur_regular_ = lu.rcond() > kMinSchurReciprocalCondition;
     if (schur_regular_) schur_inverse_ = lu.inverse();
-    report.condensation_seconds += seconds_since(t);
+    cost.condensation_seconds += seconds_since(t);
   } else {
     // Columns, or a linear model (m = 0): A's own factorisation, kept from step to step.
     if (!linear_) linear_ = make_linear_solver(linear_solver_name_);
     if (!linear_->is_analyzed_for(A)) {
       linear_->analyze(A);
-      report.analyze_seconds += seconds_since(t);
+      cost.analyze_seconds += seconds_since(t);
       t = Clock::now();
     }
     linear_->factorize(A);
-    report.factorize_seconds += seconds_since(t);
+    cost.factorize_seconds += seconds_since(t);
     columns_.assign(nonlinear_.size(), Eigen::VectorXd());
   }
-  ++report.factorizations;
-  model_ = &model;
-  version_ = model.linear_jacobian_version();
+  ++cost.factorizations;
+  problem_ = &problem;
+  version_ = problem.linear_jacobian_version();
 }
 
-Eigen::VectorXd CondensedSolve::step(Model& model, const Eigen::VectorXd& b, NewtonReport& report) {
-  prepare(model, report);
+Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::VectorXd& b, LinearSolveCost& cost) {
+  prepare(problem, cost);
   // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
   // active dofs where D has a non-zero row or column (for contact, the nodes in compression).
   const auto t = Clock::now();
-  const CsrMatrix& J = model.jacobian();
-  const CsrMatrix& A = model.linear_jacobian();
+  const CsrMatrix& J = problem.jacobian();
+  const CsrMatrix& A = problem.linear_jacobian();
   const int m = static_cast<int>(nonlinear_.size());
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(m, m);
   std::vector<char> is_active(m, 0);
@@ -91,18 +108,18 @@ Eigen::VectorXd CondensedSolve::step(Model& model, const Eigen::VectorXd& b, New
   std::vector<int> active;
   for (int i = 0; i < m; ++i)
     if (is_active[i]) active.push_back(i);
-  report.condensation_seconds += seconds_since(t);
-  return method_ == Condensation::Schur && m > 0 ? schur_step(D, active, b, report) : columns_step(D, active, b, report);
+  cost.condensation_seconds += seconds_since(t);
+  return method_ == Condensation::Schur && m > 0 ? schur_step(D, active, b, cost) : columns_step(D, active, b, cost);
 }
 
 // (S_c + D) x_c = r with r = reduce(b), by Woodbury on S_c^-1 over the active dofs I:
 //   x_c = t - S_c^-1[:, I] (1 + D_II S_c^-1[I, I])^-1 D_II t_I,  t = S_c^-1 r,
 // then dx = expand(b, x_c).
 Eigen::VectorXd CondensedSolve::schur_step(const Eigen::MatrixXd& D, const std::vector<int>& active,
-                                           const Eigen::VectorXd& b, NewtonReport& report) {
+                                           const Eigen::VectorXd& b, LinearSolveCost& cost) {
   auto t = Clock::now();
   const Eigen::VectorXd r = schur_->reduce(b);
-  report.solve_seconds += seconds_since(t);
+  cost.solve_seconds += seconds_since(t);
   t = Clock::now();
   Eigen::VectorXd x_c;
   if (!schur_regular_) {
@@ -118,19 +135,19 @@ Eigen::VectorXd CondensedSolve::schur_step(const Eigen::MatrixXd& D, const std::
       x_c -= schur_inverse_(Eigen::all, active) * z;
     }
   }
-  report.condensation_seconds += seconds_since(t);
+  cost.condensation_seconds += seconds_since(t);
   t = Clock::now();
   Eigen::VectorXd dx = schur_->expand(b, x_c);
-  report.solve_seconds += seconds_since(t);
+  cost.solve_seconds += seconds_since(t);
   return dx;
 }
 
 // With y = A^-1 b and S = P A^-1 P^T: (1 + S_II D_II) z = y_I, then dx = A^-1 (b - P_I^T D_II z).
 Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std::vector<int>& active,
-                                             const Eigen::VectorXd& b, NewtonReport& report) {
+                                             const Eigen::VectorXd& b, LinearSolveCost& cost) {
   auto t = Clock::now();
   const Eigen::VectorXd y = linear_->solve(b);
-  report.solve_seconds += seconds_since(t);
+  cost.solve_seconds += seconds_since(t);
   if (active.empty()) return y;
 
   // Columns of S, computed once per factorisation of A for each dof that becomes active.
@@ -153,10 +170,10 @@ Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std
   const Eigen::VectorXd w = Da * z;
   Eigen::VectorXd corrected = b;
   for (int q = 0; q < a; ++q) corrected[active_dofs[q]] -= w[q];
-  report.condensation_seconds += seconds_since(t);
+  cost.condensation_seconds += seconds_since(t);
   t = Clock::now();
   Eigen::VectorXd dx = linear_->solve(corrected);
-  report.solve_seconds += seconds_since(t);
+  cost.solve_seconds += seconds_since(t);
   return dx;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The Newton step through a small system on the contact dofs. Inside a time step only the nonlinear bricks
-// change, and they fill the rows and columns of a few dofs (the contact boundary's, Model::nonlinear_dofs):
-//   J = A + P^T D P,   A the linear part (Model::linear_jacobian), D the nonlinear part on those m dofs.
+// change, and they fill the rows and columns of a few dofs (the contact boundary's,
+// NonlinearProblem::nonlinear_dofs):
+//   J = A + P^T D P,   A the linear part (NonlinearProblem::linear_jacobian), D the nonlinear part on those m dofs.
 // A is factorised once per change of its values (once per step size), and each iteration solves J dx = b
 // through that factorisation and a dense system on the active dofs (those where D is non-zero). Two methods:
 //   Schur    MUMPS factorises A with the m dofs eliminated last and returns the Schur complement S_c of the
@@ -11,9 +12,12 @@
 //            Only the interior must be regular (A may be singular: a body held by its contact only).
 //   Columns  any linear solver: the columns of S = P A^-1 P^T by one solve per active dof (cached per
 //            factorisation), then the Woodbury formula: two solves per iteration. A must be regular.
-// Both throw pc::Error when their factorisation fails; the caller then solves in full.
+// A linear strategy of Newton: it says whether it applies to a problem, and returns each step with its cost;
+// a step whose factorisation (or solve) with A fails comes back empty, and the problem is then solved in
+// full and not condensed again.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,35 +26,45 @@
 
 #include "assembly/linear_solver.hpp"
 #include "assembly/schur_complement.hpp"
+#include "models/solvers/linear_solve_cost.hpp"
+#include "models/solvers/nonlinear_problem.hpp"
 
 namespace pc {
-
-class Model;
-struct NewtonReport;
 
 enum class Condensation { Schur, Columns };
 Condensation condensation_from_string(const std::string& name);  // "schur" | "columns"
 std::string to_string(Condensation method);
 
+struct CondensedStep {
+  std::optional<Eigen::VectorXd> dx;  // empty: A (for Schur, its interior) could not be factorised
+  LinearSolveCost cost;
+};
+
 class CondensedSolve {
  public:
-  CondensedSolve(Condensation method, std::string linear_solver);
-  // The step dx with J dx = b for the model's current (assembled) Jacobian; timings and factorisations
-  // go into the report.
-  Eigen::VectorXd step(Model& model, const Eigen::VectorXd& b, NewtonReport& report);
+  // Applies to problems whose nonlinear dofs are at most max_fraction of all (0: to none).
+  CondensedSolve(Condensation method, std::string linear_solver, double max_fraction);
+  // Whether the problem's nonlinear dofs are few enough and its linear part has not failed to condense.
+  bool applies(NonlinearProblem& problem) const;
+  // The step dx with J dx = b for the problem's current (assembled) Jacobian.
+  CondensedStep step(NonlinearProblem& problem, const Eigen::VectorXd& b);
   Condensation method() const { return method_; }
 
  private:
-  // Refactorises A when the model, its linear part or its nonlinear dofs changed.
-  void prepare(Model& model, NewtonReport& report);
+  // Refactorises A when the problem, its linear part or its nonlinear dofs changed.
+  void prepare(NonlinearProblem& problem, LinearSolveCost& cost);
+  Eigen::VectorXd solve(NonlinearProblem& problem, const Eigen::VectorXd& b, LinearSolveCost& cost);
   Eigen::VectorXd schur_step(const Eigen::MatrixXd& D, const std::vector<int>& active, const Eigen::VectorXd& b,
-                             NewtonReport& report);
+                             LinearSolveCost& cost);
   Eigen::VectorXd columns_step(const Eigen::MatrixXd& D, const std::vector<int>& active, const Eigen::VectorXd& b,
-                               NewtonReport& report);
+                               LinearSolveCost& cost);
 
   Condensation method_;
   std::string linear_solver_name_;
-  const Model* model_ = nullptr;
+  double max_fraction_;
+  // The problem whose linear part could not be condensed (singular): it is solved in full from then on.
+  const NonlinearProblem* uncondensable_ = nullptr;
+  const NonlinearProblem* problem_ = nullptr;
   std::uint64_t version_ = 0;
   std::vector<int> nonlinear_;
   std::vector<int> position_;  // position of a global dof among the nonlinear dofs, or -1

@@ -11,21 +11,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Norms of the blocks of a global vector (free dofs of each unknown are numbered consecutively).
-std::vector<double> block_norms(const DofLayout& layout, const Eigen::VectorXd& x) {
+// Norms of the blocks of a vector of free values.
+std::vector<double> block_norms(const std::vector<ProblemBlock>& blocks, const Eigen::VectorXd& x) {
   std::vector<double> norms;
-  int offset = 0;
-  for (int f = 0; f < layout.num_fields(); ++f) {
-    norms.push_back(x.segment(offset, layout.num_free(f)).norm());
-    offset += layout.num_free(f);
-  }
+  for (const ProblemBlock& b : blocks) norms.push_back(x.segment(b.begin, b.size).norm());
   return norms;
-}
-
-std::map<std::string, Eigen::VectorXd> unknown_values(const Model& model) {
-  std::map<std::string, Eigen::VectorXd> values;
-  for (const std::string& u : model.unknowns()) values[u] = model.values(u);
-  return values;
 }
 
 double merit(const std::vector<double>& norms, const std::vector<double>& reference) {
@@ -46,7 +36,10 @@ std::string to_string(NewtonOutcome outcome) {
   return "unknown";
 }
 
-NewtonSolver::NewtonSolver(NewtonOptions options) : options_(std::move(options)) {
+NewtonSolver::NewtonSolver(NewtonOptions options)
+    : options_(std::move(options)),
+      condensed_(condensation_from_string(options_.condensation), options_.linear_solver,
+                 options_.condensed_max_fraction) {
   require(options_.max_iterations >= 1, "Newton: max_iterations must be >= 1, got ", options_.max_iterations);
   require(options_.relative_tolerance >= 0 && options_.absolute_tolerance >= 0 && options_.increment_tolerance >= 0,
           "Newton: tolerances must be >= 0");
@@ -54,11 +47,23 @@ NewtonSolver::NewtonSolver(NewtonOptions options) : options_(std::move(options))
   require(options_.backtrack_factor > 0 && options_.backtrack_factor < 1, "Newton: backtrack_factor must be in (0, 1), got ",
           options_.backtrack_factor);
   linear_ = make_linear_solver(options_.linear_solver);
-  condensed_ = std::make_unique<CondensedSolve>(condensation_from_string(options_.condensation), options_.linear_solver);
 }
 
-Eigen::VectorXd NewtonSolver::full_step(Model& model, NewtonReport& report) {
-  const CsrMatrix& J = model.jacobian();
+Eigen::VectorXd NewtonSolver::step(NonlinearProblem& problem, NewtonReport& report) {
+  if (condensed_.applies(problem)) {
+    CondensedStep condensed = condensed_.step(problem, -problem.residual());
+    report += condensed.cost;
+    report.condensed = condensed.dx.has_value();
+    if (condensed.dx) return std::move(*condensed.dx);
+    // The linear part (or, for the Schur method, its interior) is singular: the condensed solve no longer
+    // applies to this problem, which is solved in full; a genuinely singular J then fails there with the
+    // solver's message.
+  }
+  return full_step(problem, report);
+}
+
+Eigen::VectorXd NewtonSolver::full_step(NonlinearProblem& problem, NewtonReport& report) {
+  const CsrMatrix& J = problem.jacobian();
   if (analyzed_matrix_ != &J || analyzed_nonzeros_ != J.nonZeros()) {
     const auto t = Clock::now();
     linear_->analyze(J);
@@ -72,77 +77,56 @@ Eigen::VectorXd NewtonSolver::full_step(Model& model, NewtonReport& report) {
   report.factorize_seconds += seconds_since(t);
   ++report.factorizations;
   t = Clock::now();
-  Eigen::VectorXd dx = linear_->solve(-model.residual());
+  Eigen::VectorXd dx = linear_->solve(-problem.residual());
   report.solve_seconds += seconds_since(t);
   return dx;
 }
 
-bool NewtonSolver::condensation_applies(Model& model) const {
-  if (options_.condensed_max_fraction <= 0) return false;
-  if (uncondensable_model_ == &model) return false;
-  const double m = double(model.nonlinear_dofs().size());
-  // m = 0 (a linear model) also gains: the factorisation of A is kept from step to step.
-  return m <= options_.condensed_max_fraction * model.layout().size();
-}
-
-Eigen::VectorXd NewtonSolver::condensed_step(Model& model, NewtonReport& report) {
-  report.condensed = true;
-  try {
-    return condensed_->step(model, -model.residual(), report);
-  } catch (const Error&) {
-    // The linear part (or, for the Schur method, its interior) is singular: solve in full from now on;
-    // a genuinely singular J then fails there with the solver's message.
-    uncondensable_model_ = &model;
-    report.condensed = false;
-    return full_step(model, report);
-  }
-}
-
-NewtonReport NewtonSolver::solve(Model& model) {
+NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   const auto start = Clock::now();
   NewtonReport report;
   auto assemble = [&] {
     const auto t = Clock::now();
-    model.assemble(true);
+    problem.assemble(true);
     report.assembly_seconds += seconds_since(t);
   };
   auto finish = [&](NewtonOutcome outcome, std::string message) {
     report.outcome = outcome;
     report.message = std::move(message);
-    report.diagnostics = model.diagnostics();
+    report.diagnostics = problem.diagnostics();
     report.total_seconds = seconds_since(start);
     return report;
   };
 
   assemble();
-  const DofLayout& layout = model.layout();
-  for (int f = 0; f < layout.num_fields(); ++f) report.blocks.push_back(layout.field_name(f));
-  const int n_blocks = layout.num_fields();
+  const std::vector<ProblemBlock> blocks = problem.blocks();
+  for (const ProblemBlock& b : blocks) report.blocks.push_back(b.name);
+  const int n_blocks = int(blocks.size());
   std::vector<double> absolute(n_blocks, options_.absolute_tolerance);
   for (int b = 0; b < n_blocks; ++b)
     if (options_.absolute_tolerances.count(report.blocks[b])) absolute[b] = options_.absolute_tolerances.at(report.blocks[b]);
 
-  std::vector<double> norms = block_norms(layout, model.residual());
+  std::vector<double> norms = block_norms(blocks, problem.residual());
   report.history.push_back({norms, {}, 0, 0});
   // Reference of each block: its first residual (or its absolute tolerance, if that is larger), so that
   // the merit function weighs the blocks alike whatever their units.
+  const std::vector<double> scales = problem.residual_scales();
   std::vector<double> reference(n_blocks);
-  for (int b = 0; b < n_blocks; ++b)
-    reference[b] = std::max({norms[b], model.residual_scales().at(report.blocks[b]), absolute[b], 1e-300});
+  for (int b = 0; b < n_blocks; ++b) reference[b] = std::max({norms[b], scales[b], absolute[b], 1e-300});
   auto residual_converged = [&](const std::vector<double>& r) {
     for (int b = 0; b < n_blocks; ++b)
       if (r[b] > std::max(absolute[b], options_.relative_tolerance * reference[b])) return false;
     return true;
   };
-  if (!model.residual().allFinite()) return finish(NewtonOutcome::Diverged, "the initial residual is not finite");
-  if (residual_converged(norms) || layout.size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
+  if (!problem.residual().allFinite()) return finish(NewtonOutcome::Diverged, "the initial residual is not finite");
+  if (residual_converged(norms) || problem.residual().size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
   const double merit0 = merit(norms, reference);
   const double divergence_bound = options_.divergence_factor * std::max(merit0, 1.0);
 
   // Watchdog: the best iterate so far, and the full steps taken since it was last improved on.
   const bool watchdog = options_.line_search && options_.watchdog > 0;
-  std::map<std::string, Eigen::VectorXd> best;
-  if (watchdog) best = unknown_values(model);
+  Eigen::VectorXd best;
+  if (watchdog) best = problem.free_values();
   double best_merit = merit0;
   int since_best = 0;
 
@@ -150,15 +134,15 @@ NewtonReport NewtonSolver::solve(Model& model) {
     report.iterations = iteration;
     bool restarted = false;
     if (watchdog && since_best >= options_.watchdog) {
-      for (const auto& [name, values] : best) model.set_values(name, values);
+      problem.set_free_values(best);
       assemble();
-      norms = block_norms(layout, model.residual());
+      norms = block_norms(blocks, problem.residual());
       since_best = 0;
       restarted = true;
     }
     Eigen::VectorXd dx;
     try {
-      dx = condensation_applies(model) ? condensed_step(model, report) : full_step(model, report);
+      dx = step(problem, report);
     } catch (const Error& e) {
       return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": ", e.what()));
     }
@@ -172,10 +156,10 @@ NewtonReport NewtonSolver::solve(Model& model) {
     int backtracks = 0;
     std::vector<double> new_norms;
     while (true) {
-      model.add_to_free_values((alpha - applied) * dx);
+      problem.add_to_free_values((alpha - applied) * dx);
       applied = alpha;
       assemble();
-      new_norms = block_norms(layout, model.residual());
+      new_norms = block_norms(blocks, problem.residual());
       const double m = merit(new_norms, reference);
       const bool accept = !options_.line_search ||
                           (armijo ? std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before
@@ -185,13 +169,13 @@ NewtonReport NewtonSolver::solve(Model& model) {
       ++backtracks;
     }
     norms = new_norms;
-    const std::vector<double> steps = block_norms(layout, alpha * dx);
+    const std::vector<double> steps = block_norms(blocks, alpha * dx);
     report.history.push_back({norms, steps, alpha, backtracks, restarted});
 
-    if (!model.residual().allFinite())
+    if (!problem.residual().allFinite())
       return finish(NewtonOutcome::Diverged, message("iteration ", iteration, ": the residual is not finite"));
     if (residual_converged(norms)) return finish(NewtonOutcome::Converged, "residual tolerance met");
-    const std::vector<double> sizes = block_norms(layout, model.free_values());
+    const std::vector<double> sizes = block_norms(blocks, problem.free_values());
     bool small_step = alpha == 1;
     for (int b = 0; b < n_blocks; ++b)
       small_step = small_step && steps[b] <= options_.increment_tolerance * std::max(sizes[b], 1e-300);
@@ -202,7 +186,7 @@ NewtonReport NewtonSolver::solve(Model& model) {
                                                      options_.divergence_factor));
     if (m <= (1 - 2 * options_.armijo) * best_merit) {
       best_merit = m;
-      if (watchdog) best = unknown_values(model);
+      if (watchdog) best = problem.free_values();
       since_best = 0;
     } else {
       ++since_best;

@@ -1,7 +1,7 @@
 #pragma once
-// Monolithic Newton on all active unknowns of a Model (the paper's (29)-(30): velocity and potential
-// together), with backtracking line search and convergence judged per block, since the mechanical and
-// electric residuals have different units.
+// Monolithic Newton on all free values of a NonlinearProblem (for the paper's Model, (29)-(30): velocity and
+// potential together), with backtracking line search and convergence judged per block, since the
+// mechanical and electric residuals have different units.
 #include <map>
 #include <memory>
 #include <string>
@@ -9,7 +9,8 @@
 
 #include "assembly/linear_solver.hpp"
 #include "models/solvers/condensed_solve.hpp"
-#include "models/model.hpp"
+#include "models/solvers/linear_solve_cost.hpp"
+#include "models/solvers/nonlinear_problem.hpp"
 
 namespace pc {
 
@@ -17,11 +18,11 @@ struct NewtonOptions {
   int max_iterations = 25;
   // Block b has converged when ||R_b|| <= max(absolute, relative * reference_b), where reference_b is the
   // larger of the block's first residual and the scale of the forces that balance in it (the largest
-  // single brick contribution, Model::residual_scales): a residual cannot drop below round-off of the
+  // single term, NonlinearProblem::residual_scales): a residual cannot drop below round-off of the
   // terms it sums, however small the first residual of a step was.
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 1e-14;
-  std::map<std::string, double> absolute_tolerances;  // per unknown, overriding absolute_tolerance
+  std::map<std::string, double> absolute_tolerances;  // per block, overriding absolute_tolerance
   // ... or when a full step changed every block by at most this much relative to the block's size.
   double increment_tolerance = 1e-12;
   // Globalisation. With line_search, a step is taken in full as long as the scaled residual stays finite
@@ -60,16 +61,16 @@ struct NewtonIteration {
   bool restarted = false;  // the watchdog returned to the best iterate before this step
 };
 
-struct NewtonReport {
+// The linear solves' cost (analyze, factorize, solve and condensation seconds, factorizations) is the
+// base, so that a strategy's cost adds into it.
+struct NewtonReport : LinearSolveCost {
   NewtonOutcome outcome = NewtonOutcome::MaxIterations;
   int iterations = 0;
-  std::vector<std::string> blocks;       // the unknowns, in block order
+  std::vector<std::string> blocks;       // the problem's blocks, in order
   std::vector<NewtonIteration> history;  // history[0] is the initial residual
-  double assembly_seconds = 0, analyze_seconds = 0, factorize_seconds = 0, solve_seconds = 0, total_seconds = 0;
-  double condensation_seconds = 0;  // the dense interface systems of the condensed solve
-  int factorizations = 0;           // sparse factorisations done by this solve
-  bool condensed = false;           // whether the condensed solve was used
-  std::map<std::string, double> diagnostics;  // the model's, at the end
+  double assembly_seconds = 0, total_seconds = 0;
+  bool condensed = false;  // whether the condensed solve was used
+  std::map<std::string, double> diagnostics;  // the problem's, at the end
   std::string message;
   bool converged() const { return outcome == NewtonOutcome::Converged; }
 };
@@ -77,27 +78,25 @@ struct NewtonReport {
 class NewtonSolver {
  public:
   explicit NewtonSolver(NewtonOptions options = {});
+  // The options are fixed here: the linear solver and the condensed solve are built from them.
   const NewtonOptions& options() const { return options_; }
-  NewtonOptions& options() { return options_; }
-  // Solves R(x) = 0 from the model's current unknowns; the model is left at the last iterate.
-  NewtonReport solve(Model& model);
+  // Solves R(x) = 0 from the problem's current free values; the problem is left at the last iterate.
+  NewtonReport solve(NonlinearProblem& problem);
   // Symbolic analyses done so far (one per sparsity pattern).
   int analyses() const { return analyses_; }
 
  private:
-  // One Newton step dx with J dx = -R, by full factorisation or through the condensed system.
-  Eigen::VectorXd full_step(Model& model, NewtonReport& report);
-  Eigen::VectorXd condensed_step(Model& model, NewtonReport& report);
-  bool condensation_applies(Model& model) const;
+  // One Newton step dx with J dx = -R: through the condensed system where it applies, else by a full
+  // factorisation.
+  Eigen::VectorXd step(NonlinearProblem& problem, NewtonReport& report);
+  Eigen::VectorXd full_step(NonlinearProblem& problem, NewtonReport& report);
 
   NewtonOptions options_;
   std::unique_ptr<LinearSolver> linear_;
   const CsrMatrix* analyzed_matrix_ = nullptr;
   long analyzed_nonzeros_ = -1;
   int analyses_ = 0;
-  std::unique_ptr<CondensedSolve> condensed_;
-  // The model whose linear part could not be condensed (singular): it is solved in full from then on.
-  const Model* uncondensable_model_ = nullptr;
+  CondensedSolve condensed_;
 };
 
 }  // namespace pc

@@ -176,7 +176,6 @@ StepperOptions one_static_step() {
   o.start = 0;
   o.end = 1;
   o.step = 1;  // one backward Euler step of size 1 from u_prev = 0: u = v
-  o.initial_potential = false;
   return o;
 }
 
@@ -378,7 +377,6 @@ TEST(EnergyIdentity, BackwardEulerWithDissipativeContactLaws) {
   o.start = 0;
   o.end = 1;
   o.step = 0.05;
-  o.initial_potential = false;
   o.prediction = Prediction::Previous;
   NewtonOptions newton_options;
   newton_options.relative_tolerance = 1e-12;

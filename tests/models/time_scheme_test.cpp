@@ -27,6 +27,7 @@
 #include "assembly/mesh_generators.hpp"
 #include "assembly/norms.hpp"
 #include "models/solvers/newton.hpp"
+#include "models/piezo/initial_potential.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/scene/scene.hpp"
 #include "models/scene/scene_runner.hpp"
@@ -110,7 +111,9 @@ SchemeRun run_uniform(std::shared_ptr<const Mesh> mesh, const SchemeFactory& mak
   options.step = kT / steps;
   options.prediction = Prediction::Previous;
   NewtonSolver newton = small_system_newton();
-  const RunSummary run = Stepper(options).run(*p->s.model, *p->s.scheme, newton);
+  StepperCallbacks callbacks;
+  callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, *p->s.scheme, newton); };
+  const RunSummary run = Stepper(options).run(*p->s.model, *p->s.scheme, newton, callbacks);
   EXPECT_TRUE(run.completed) << run.message;
   EXPECT_EQ(run.newton_iterations_max_per_step, 1) << "a linear model converges in one Newton iteration";
   return finish(*p);

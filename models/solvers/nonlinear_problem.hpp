@@ -1,0 +1,55 @@
+#pragma once
+// What Newton and its linear strategies see of a problem R(x) = 0 (GetFEM's PB with compute_residual and
+// compute_tangent_matrix, MFEM's Operator with Mult and GetGradient): its residual and Jacobian on the free
+// values x, the part of the Jacobian that does not depend on x (so that a factorisation of it can be kept),
+// and the block structure by which convergence is judged. Model is one; a test's hand-written system is
+// another, so the solvers never depend on how a problem is assembled.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/sparse.hpp"
+
+namespace pc {
+
+// The free values [begin, begin + size) of x: one unknown of the problem, with its own units (a velocity,
+// a potential), so that Newton measures each block's residual against its own scale.
+struct ProblemBlock {
+  std::string name;
+  int begin = 0;
+  int size = 0;
+};
+
+class NonlinearProblem {
+ public:
+  virtual ~NonlinearProblem() = default;
+
+  // Residual R(x) at the current free values and, if tangent, its Jacobian J = dR/dx.
+  virtual void assemble(bool tangent) = 0;
+  virtual const Eigen::VectorXd& residual() const = 0;
+  virtual const CsrMatrix& jacobian() const = 0;
+  // The part A of J that does not depend on x, with J's pattern. Its version changes only when its values
+  // do, so a factorisation of A can be kept across iterations and solves.
+  virtual const CsrMatrix& linear_jacobian() = 0;
+  virtual std::uint64_t linear_jacobian_version() = 0;
+  // The free dofs outside whose rows and columns J - A vanishes (sorted).
+  virtual const std::vector<int>& nonlinear_dofs() = 0;
+
+  // The blocks, in order, covering x.
+  virtual std::vector<ProblemBlock> blocks() const = 0;
+  // Per block, the size of the largest single term the last residual summed: round-off of the residual is
+  // measured against it.
+  virtual std::vector<double> residual_scales() const = 0;
+
+  virtual Eigen::VectorXd free_values() const = 0;
+  virtual void set_free_values(const Eigen::VectorXd& x) = 0;
+  virtual void add_to_free_values(const Eigen::VectorXd& step) = 0;  // x += step
+
+  // Named quantities reported with each solve (e.g. contact nodes in compression).
+  virtual std::map<std::string, double> diagnostics() const = 0;
+};
+
+}  // namespace pc

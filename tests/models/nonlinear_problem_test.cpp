@@ -1,0 +1,205 @@
+// Newton on hand-written NonlinearProblems that are not a Model (models/solvers/nonlinear_problem.hpp): the
+// solver sees only the narrow interface. A 2 x 2 system with a known root shows quadratic convergence, block
+// by block; a chain of linear springs held by cubic springs exercises the condensed solve (their nodes are
+// the nonlinear dofs), by both methods, and its fall-back when the linear part is singular (a chain held by
+// the cubic springs only).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "models/solvers/newton.hpp"
+#include "models/solvers/nonlinear_problem.hpp"
+
+namespace pc {
+namespace {
+
+CsrMatrix from_triplets(int n, const std::vector<Eigen::Triplet<double>>& entries) {
+  CsrMatrix m(n, n);
+  m.setFromTriplets(entries.begin(), entries.end());
+  m.makeCompressed();
+  return m;
+}
+
+// x^2 + y^2 = 4 and x y = 1 (a circle and a hyperbola), one block per unknown; the root near (2, 1) is
+// x = (sqrt 6 + sqrt 2) / 2, y = (sqrt 6 - sqrt 2) / 2. Every iterate is recorded when it is assembled.
+class CircleHyperbola : public NonlinearProblem {
+ public:
+  CircleHyperbola() : x_(Eigen::Vector2d(2, 1)) {
+    jacobian_ = from_triplets(2, {{0, 0, 1}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}});
+    linear_ = jacobian_;
+    linear_.coeffs().setZero();  // every term depends on x
+  }
+  void assemble(bool tangent) override {
+    iterates.push_back(x_);
+    const double x = x_[0], y = x_[1];
+    residual_ = Eigen::Vector2d(x * x + y * y - 4, x * y - 1);
+    scales_ = {std::max({x * x, y * y, 4.0}), std::max(std::abs(x * y), 1.0)};
+    if (tangent) jacobian_.coeffs() << 2 * x, 2 * y, y, x;  // row-major: (0,0) (0,1) (1,0) (1,1)
+  }
+  const Eigen::VectorXd& residual() const override { return residual_; }
+  const CsrMatrix& jacobian() const override { return jacobian_; }
+  const CsrMatrix& linear_jacobian() override { return linear_; }
+  std::uint64_t linear_jacobian_version() override { return 1; }
+  const std::vector<int>& nonlinear_dofs() override { return nonlinear_; }
+  std::vector<ProblemBlock> blocks() const override { return {{"x", 0, 1}, {"y", 1, 1}}; }
+  std::vector<double> residual_scales() const override { return scales_; }
+  Eigen::VectorXd free_values() const override { return x_; }
+  void set_free_values(const Eigen::VectorXd& x) override { x_ = x; }
+  void add_to_free_values(const Eigen::VectorXd& step) override { x_ += step; }
+  std::map<std::string, double> diagnostics() const override { return {{"iterates", double(iterates.size())}}; }
+
+  static Eigen::Vector2d root() {
+    return Eigen::Vector2d(std::sqrt(6.0) + std::sqrt(2.0), std::sqrt(6.0) - std::sqrt(2.0)) / 2;
+  }
+  std::vector<Eigen::VectorXd> iterates;
+
+ private:
+  Eigen::VectorXd x_, residual_;
+  std::vector<double> scales_;
+  CsrMatrix jacobian_, linear_;
+  std::vector<int> nonlinear_ = {0, 1};
+};
+
+TEST(NonlinearProblem, NewtonConvergesQuadraticallyOnAHandWrittenSystem) {
+  CircleHyperbola problem;
+  NewtonOptions options;
+  options.line_search = false;  // pure Newton: one assembly per iteration
+  const NewtonReport report = NewtonSolver(options).solve(problem);
+  ASSERT_TRUE(report.converged()) << report.message;
+  EXPECT_EQ(report.blocks, (std::vector<std::string>{"x", "y"}));
+  EXPECT_FALSE(report.condensed) << "every dof is nonlinear: the condensed solve does not apply";
+  EXPECT_EQ(report.diagnostics.at("iterates"), double(problem.iterates.size()));
+  EXPECT_LT((problem.free_values() - CircleHyperbola::root()).norm(), 1e-11);
+  // e_{k+1} <= C e_k^2 while e_k is above round-off (C = |J^-1| |R''| / 2 is about 0.5 here).
+  int measured = 0;
+  for (size_t k = 0; k + 1 < problem.iterates.size(); ++k) {
+    const double e = (problem.iterates[k] - CircleHyperbola::root()).norm();
+    const double next = (problem.iterates[k + 1] - CircleHyperbola::root()).norm();
+    if (e < 1e-6) break;
+    EXPECT_LT(next / (e * e), 0.6) << "iteration " << k;
+    ++measured;
+  }
+  EXPECT_GE(measured, 3);
+  EXPECT_LE(report.iterations, 6);
+}
+
+// n unit springs in a row, node 0 pulled by a unit force and the nodes `held` tied to the ground by springs
+// of force x + x^3 (the nonlinear dofs). Anchored: node 0 is also tied to the ground by a unit spring, so
+// the linear part A is regular; free: A is the singular Laplacian of a chain that only the cubic springs hold.
+class SpringChain : public NonlinearProblem {
+ public:
+  SpringChain(int n, bool anchored, std::vector<int> held)
+      : n_(n), x_(Eigen::VectorXd::Zero(n)), f_(Eigen::VectorXd::Zero(n)), nonlinear_(std::move(held)) {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i + 1 < n; ++i)
+      for (auto [r, c, v] : {std::tuple{i, i, 1.0}, {i + 1, i + 1, 1.0}, {i, i + 1, -1.0}, {i + 1, i, -1.0}})
+        entries.emplace_back(r, c, v);
+    if (anchored) entries.emplace_back(0, 0, 1.0);
+    linear_ = from_triplets(n, entries);
+    jacobian_ = linear_;
+    f_[0] = 1;
+  }
+  void assemble(bool tangent) override {
+    const Eigen::VectorXd internal = linear_ * x_;
+    residual_ = internal - f_;
+    scales_ = {std::max(internal.norm(), f_.norm())};
+    if (tangent) jacobian_ = linear_;
+    for (int i : nonlinear_) {
+      const double x = x_[i];
+      residual_[i] += x + x * x * x;
+      scales_[0] = std::max(scales_[0], std::abs(x + x * x * x));
+      if (tangent) jacobian_.coeffRef(i, i) += 1 + 3 * x * x;
+    }
+  }
+  const Eigen::VectorXd& residual() const override { return residual_; }
+  const CsrMatrix& jacobian() const override { return jacobian_; }
+  const CsrMatrix& linear_jacobian() override { return linear_; }
+  std::uint64_t linear_jacobian_version() override { return 1; }
+  const std::vector<int>& nonlinear_dofs() override { return nonlinear_; }
+  std::vector<ProblemBlock> blocks() const override { return {{"x", 0, n_}}; }
+  std::vector<double> residual_scales() const override { return scales_; }
+  Eigen::VectorXd free_values() const override { return x_; }
+  void set_free_values(const Eigen::VectorXd& x) override { x_ = x; }
+  void add_to_free_values(const Eigen::VectorXd& step) override { x_ += step; }
+  std::map<std::string, double> diagnostics() const override { return {}; }
+
+ private:
+  int n_;
+  Eigen::VectorXd x_, f_, residual_;
+  std::vector<double> scales_;
+  std::vector<int> nonlinear_;
+  CsrMatrix linear_, jacobian_;
+};
+
+Eigen::VectorXd solve_in_full(int n, bool anchored, const std::vector<int>& held) {
+  SpringChain problem(n, anchored, held);
+  NewtonOptions options;
+  options.condensed_max_fraction = 0;
+  const NewtonReport report = NewtonSolver(options).solve(problem);
+  EXPECT_TRUE(report.converged()) << report.message;
+  EXPECT_FALSE(report.condensed);
+  return problem.free_values();
+}
+
+TEST(NonlinearProblem, CondensedSolveFactorisesTheLinearPartOnceAndMatchesTheFullSolve) {
+  const int n = 40;
+  const Eigen::VectorXd full = solve_in_full(n, true, {n - 1});
+  for (const char* method : {"schur", "columns"}) {
+    SpringChain problem(n, true, {n - 1});
+    NewtonOptions options;
+    options.condensation = method;
+    NewtonSolver newton(options);
+    const NewtonReport report = newton.solve(problem);
+    ASSERT_TRUE(report.converged()) << method << ": " << report.message;
+    EXPECT_TRUE(report.condensed) << method;
+    EXPECT_GT(report.iterations, 1) << method << ": the cubic spring needs several iterations";
+    EXPECT_EQ(report.factorizations, 1) << method << ": A is factorised once, whatever the iterations";
+    EXPECT_LT((problem.free_values() - full).norm(), 1e-12 * full.norm()) << method;
+    // A second solve of the same problem keeps the factorisation.
+    problem.set_free_values(Eigen::VectorXd::Zero(n));
+    const NewtonReport again = newton.solve(problem);
+    EXPECT_TRUE(again.converged() && again.condensed) << method;
+    EXPECT_EQ(again.factorizations, 0) << method;
+  }
+}
+
+TEST(NonlinearProblem, ASingularLinearPartIsSchurCondensedOrSolvedInFullFromThenOn) {
+  const int n = 40;
+  {
+    // Schur needs only the interior regular: held at both ends, the nodes between are held by the springs
+    // to the ends; the Schur complement of the ends is singular, so S_c + D is factorised per iteration.
+    const std::vector<int> ends = {0, n - 1};
+    const Eigen::VectorXd full = solve_in_full(n, false, ends);
+    SpringChain problem(n, false, ends);
+    NewtonOptions options;
+    options.condensation = "schur";
+    const NewtonReport report = NewtonSolver(options).solve(problem);
+    ASSERT_TRUE(report.converged()) << report.message;
+    EXPECT_TRUE(report.condensed);
+    EXPECT_LT((problem.free_values() - full).norm(), 1e-12 * full.norm());
+  }
+  // Columns needs A regular: its factorisation (or its solve) fails, and the problem is solved in full.
+  const Eigen::VectorXd full = solve_in_full(n, false, {n - 1});
+  SpringChain problem(n, false, {n - 1});
+  NewtonOptions options;
+  options.condensation = "columns";
+  NewtonSolver newton(options);
+  const NewtonReport report = newton.solve(problem);
+  ASSERT_TRUE(report.converged()) << report.message;
+  EXPECT_FALSE(report.condensed);
+  EXPECT_LT((problem.free_values() - full).norm(), 1e-12 * full.norm());
+  // From then on, without trying to condense again: one factorisation of J per iteration.
+  problem.set_free_values(Eigen::VectorXd::Zero(n));
+  const NewtonReport again = newton.solve(problem);
+  ASSERT_TRUE(again.converged()) << again.message;
+  EXPECT_FALSE(again.condensed);
+  EXPECT_EQ(again.factorizations, again.iterations);
+}
+
+}  // namespace
+}  // namespace pc
