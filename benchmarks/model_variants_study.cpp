@@ -34,7 +34,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 
 PiezoContactSpec variant_spec(const Scene& scene, const std::string& variant) {
   PiezoContactSpec spec = scene.spec;
-  spec.foundation = find_foundation(scene, variant == "c_conductive" ? "conductive" : "insulated").spec;
+  spec.foundation = find_foundation(scene, variant == "c_conductive" ? "conductive" : "insulated").law;
   if (variant == "a_mechanical") {
     spec.E.resize(0, 0);
     spec.beta.resize(0, 0);

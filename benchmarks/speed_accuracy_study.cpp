@@ -112,8 +112,8 @@ Settings baseline() {
   s.ny = scene.ny;
   s.order = scene.spec.order;
   s.steps = scene.steps;
-  s.scheme = scene.spec.scheme.type;
-  s.c_nu = scene.spec.normal.c_nu;
+  s.scheme = scene.spec.scheme.name;
+  s.c_nu = scene.spec.normal.parameters.at("c_nu");
   s.tolerance = scene.newton.relative_tolerance;
   s.linear = scene.newton.linear_solver;
   s.condensation = scene.newton.condensed_max_fraction > 0 ? scene.newton.condensation : "plain";

@@ -19,6 +19,7 @@
 #include "bricks/elasticity_brick.hpp"
 #include "bricks/friction_brick.hpp"
 #include "bricks/inertia_brick.hpp"
+#include "bricks/law_registry.hpp"
 #include "bricks/laws/foundation_laws.hpp"
 #include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/law_parameters.hpp"
@@ -41,8 +42,9 @@ using namespace pc;
 // D.n = k_e phi_s tanh((phi - phi_f) / phi_s): the paper's k_e (phi - phi_f) for small differences, but
 // saturating at the flux k_e phi_s. A foundation law is a value type with
 //   template <class S> S operator()(const S& phi, const S& pressure) const
-// (S is double or a Dual number, which gives the brick its tangent), compile-time traits, and optionally
-// validate(), which the brick runs when it is built.
+// (S is double or a Dual number, which gives the brick its tangent), compile-time traits, and its
+// parameters declared once: name, member, unit, documentation, valid range, required or defaulted. The
+// brick reads them from the model's constants by these names, checked against these ranges.
 struct SaturatingConductance {
   double k_e = 0, phi_f = 0, phi_s = 1;
 
@@ -50,17 +52,26 @@ struct SaturatingConductance {
   static constexpr bool dissipative = true;            // monotone in phi
   static constexpr bool uses_normal_pressure = false;  // conducts whether pressed or not
 
+  static constexpr auto parameters() {
+    return std::array{
+        law_parameter("k_e", &SaturatingConductance::k_e, "C/(V m^2)", "conductance at small potential differences",
+                      Range::at_least(0), Required::yes),
+        law_parameter("phi_f", &SaturatingConductance::phi_f, "V", "potential of the foundation", Range::any(),
+                      Required::yes),
+        law_parameter("phi_s", &SaturatingConductance::phi_s, "V", "potential difference where the flux saturates",
+                      Range::positive())};
+  }
+
   template <class S>
   S operator()(const S& phi, const S& /*pressure*/) const {
     using std::tanh;  // std::tanh for double; pc::tanh (found by argument-dependent lookup) for Dual
     return k_e * phi_s * tanh((phi - phi_f) / phi_s);
   }
-  void validate(const std::string& brick) const {
-    require_parameter_at_least(brick, "SaturatingConductance", "k_e", k_e, 0);
-    require_finite_parameter(brick, "SaturatingConductance", "phi_f", phi_f);
-    require_positive_parameter(brick, "SaturatingConductance", "phi_s", phi_s);
-  }
 };
+// One line makes it a foundation law that recipes (PiezoContactSpec::foundation = {"saturating", {...}})
+// and scenes can name, documented by `piezocontact describe` like the built-in ones.
+PC_REGISTER_FOUNDATION_LAW(SaturatingConductance, "saturating",
+                           "D.n = k_e phi_s tanh((phi - phi_f) / phi_s): conduction that saturates")
 
 // ---- the paper's strip, with the foundation law as a parameter --------------------------------------------
 // Runs T = 0.2 s in 20 steps on a coarse mesh; returns (x, phi) at the nodes of the contact boundary.
@@ -93,10 +104,14 @@ std::vector<std::pair<double, double>> potential_on_contact(const FoundationLaw&
   model.add_brick(std::make_shared<TractionBrick>(traction, LoadTime::Varying, "top"));
   model.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", "left")));
   model.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("phi", "top")));
-  model.add_brick(std::make_shared<NormalResponseBrick<LinearDampedResponse>>(LinearDampedResponse{1e12}, "bottom"));
-  model.add_brick(std::make_shared<FrictionBrick<ViscousFriction>>(ViscousFriction{0.3}, "bottom"));
-  // The law under study: any type the brick accepts.
-  model.add_brick(std::make_shared<ConductiveFoundationBrick<FoundationLaw>>(foundation, "bottom"));
+  // Law parameters are model constants: c_nu, c_tau, and the foundation law's own (k_e, phi_f, ...).
+  model.set_constants(law_values(LinearDampedResponse{1e12}));
+  model.set_constants(law_values(ViscousFriction{0.3}));
+  model.set_constants(law_values(foundation));
+  model.add_brick(std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom"));
+  model.add_brick(std::make_shared<FrictionBrick<ViscousFriction>>("bottom"));
+  // The law under study: any law type the brick accepts.
+  model.add_brick(std::make_shared<ConductiveFoundationBrick<FoundationLaw>>("bottom"));
   model.finalize();
 
   StepperOptions options;
@@ -126,7 +141,7 @@ int main() {
     const SaturatingConductance saturating{1.0, -48.0, 3e-5};
 
     // Check the law before using it: its Dual derivatives against finite differences, its dissipative
-    // claim (monotone in phi), validate(), finite values at extreme arguments. The derivatives are checked
+    // claim (monotone in phi), its values inside their declared ranges, finite values at extreme arguments. The derivatives are checked
     // with parameters of order one: next to phi_f = -48 V, phi is only known to ~1e-14 V, too coarse for
     // finite differences over phi_s = 3e-5 V. The run's own parameters get the other checks.
     auto check = [](const SaturatingConductance& law, const LawCheckOptions& options) {
@@ -137,6 +152,13 @@ int main() {
     if (!check({2.0, 0.5, 0.7}, {.name = "SaturatingConductance"}) ||
         !check(saturating, {.name = "SaturatingConductance (run parameters)", .derivatives = false}))
       return 1;
+
+    // Registered: the same entry that `piezocontact describe` prints and a scene's foundation type names.
+    const auto& entry = foundation_law_registry().at("saturating", "example");
+    std::printf("registered foundation law '%s': %s\n", entry.name.c_str(), entry.doc.c_str());
+    for (const ParameterDeclaration& p : entry.parameters)
+      std::printf("  %s [%s] %s: %s\n", p.name.c_str(), p.unit.c_str(), p.required() ? "required" : "defaulted",
+                  p.doc.c_str());
 
     std::printf("linear conductance, D.n = k_e (phi - phi_f):\n");
     const auto linear = potential_on_contact(LinearConductance{1.0, -48.0});

@@ -85,11 +85,15 @@ int main(int argc, char** argv) {
     model.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", "left")));   // u = u0 = 0
     model.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("phi", "top")));  // grounded
     // Contact on the bottom, each brick templated on its law: p_nu = c_nu (v.n)_+, p_tau = c_tau v_tau,
-    // D.n = k_e (phi - phi_f).
-    model.add_brick(std::make_shared<NormalResponseBrick<LinearDampedResponse>>(LinearDampedResponse{1e12}, "bottom"));
-    model.add_brick(std::make_shared<FrictionBrick<ViscousFriction>>(ViscousFriction{0.3}, "bottom"));
-    model.add_brick(
-        std::make_shared<ConductiveFoundationBrick<LinearConductance>>(LinearConductance{1.0, -48.0}, "bottom"));
+    // D.n = k_e (phi - phi_f). The laws' parameters are model constants, read by name like the tensors:
+    // model.set_constant("phi_f", 10.0) later changes the foundation brick alone.
+    model.set_constant("c_nu", 1e12);
+    model.set_constant("c_tau", 0.3);
+    model.set_constants(law_values(LinearConductance{1.0, -48.0}));  // k_e, phi_f
+    const auto normal = std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom");
+    model.add_brick(normal);
+    model.add_brick(std::make_shared<FrictionBrick<ViscousFriction>>("bottom"));
+    model.add_brick(std::make_shared<ConductiveFoundationBrick<LinearConductance>>("bottom"));
     model.finalize();  // binds the bricks to their regions and checks that every field is used
 
     // ---- time loop --------------------------------------------------------------------------------
@@ -125,10 +129,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "run stopped: %s\n", run.message.c_str());
       return 1;
     }
-    // Contact status at the final time: the nodes of the bottom where the normal law gives a pressure,
-    // i.e. (damped response) that still move into the foundation, v.n > 0. The bottom's outward normal is -y.
-    const ContactStatus status = contact_status(LinearDampedResponse{1e12}, model.space("v"), "bottom",
-                                                model.values("v"), model.values("v"), {0, -1, 0}, 0.0);
+    // Contact status at the final time: the nodes of the bottom where the model's normal brick gives a
+    // pressure, i.e. (damped response) that still move into the foundation, v.n > 0.
+    const ContactStatus status = contact_status(*normal, model.space("v"), contact_nodes(model.space("v"), "bottom"),
+                                                model.values("v"), model.values("v"), 0.0);
     std::printf("contact at T: %d of %d bottom nodes in compression\n", status.in_contact, status.nodes);
     std::printf("%d steps, %d Newton iterations (at most %d per step), %.2f s; results in %s\n", run.steps,
                 run.newton_iterations_total, run.newton_iterations_max_per_step, run.wall_seconds,

@@ -23,7 +23,7 @@ struct LinearConductance {
   static constexpr bool uses_normal_pressure = false;
 
   static constexpr auto parameters() {
-    return std::array{law_parameter("k_e", &LinearConductance::k_e, "S/m^2",
+    return std::array{law_parameter("k_e", &LinearConductance::k_e, "C/(V m^2)",
                                     "conductance: D.n = k_e (phi - phi_f)", Range::at_least(0), Required::yes),
                       law_parameter("phi_f", &LinearConductance::phi_f, "V", "potential of the foundation",
                                     Range::any(), Required::yes)};
@@ -48,7 +48,7 @@ struct PressureActivatedConductance {
   static constexpr bool uses_normal_pressure = true;
 
   static constexpr auto parameters() {
-    return std::array{law_parameter("k_e", &PressureActivatedConductance::k_e, "S/m^2",
+    return std::array{law_parameter("k_e", &PressureActivatedConductance::k_e, "C/(V m^2)",
                                     "conductance at full contact", Range::at_least(0), Required::yes),
                       law_parameter("phi_f", &PressureActivatedConductance::phi_f, "V", "potential of the foundation",
                                     Range::any(), Required::yes),

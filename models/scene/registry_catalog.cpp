@@ -3,6 +3,7 @@
 #include "assembly/error.hpp"
 #include "assembly/linear_solver.hpp"
 #include "bricks/law_registry.hpp"
+#include "models/solvers/condensed_solve.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {
@@ -34,7 +35,7 @@ std::string table_cell(const std::string& text) {
 std::vector<CatalogSection> registry_catalog() {
   return {section(normal_law_registry(), "contact"), section(friction_law_registry(), "contact"),
           section(foundation_law_registry(), "foundation.<name>"), section(time_scheme_registry(), "time"),
-          section(linear_solver_registry(), "solver")};
+          section(linear_solver_registry(), "solver"), section(condensation_registry(), "solver")};
 }
 
 std::string catalog_list(const std::vector<CatalogSection>& catalog) {

@@ -12,6 +12,7 @@
 #include "bricks/law_registry.hpp"
 #include "bricks/voigt.hpp"
 #include "models/scene/registered_keys.hpp"
+#include "models/solvers/condensed_solve.hpp"
 
 namespace pc {
 namespace {
@@ -321,14 +322,10 @@ Scene load_scene(const Json& json, const std::string& directory) {
                             "cutback_factor", "condensed", "condensation"});
     if (const Json* x = s->find("condensed"))
       scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
-    if (const Json* x = s->find("condensation")) {
-      scene.newton.condensation = x->as_string();
-      condensation_from_string(scene.newton.condensation);  // an unknown name fails here, listing the known ones
-    }
-    if (const Json* x = s->find("linear")) {
-      scene.newton.linear_solver = x->as_string();
-      make_linear_solver(scene.newton.linear_solver);  // an unknown name fails here, listing the known ones
-    }
+    scene.newton.condensation =
+        chosen_entry(*s, "condensation", condensation_registry(), NewtonOptions{}.condensation).name;
+    scene.newton.linear_solver =
+        chosen_entry(*s, "linear", linear_solver_registry(), NewtonOptions{}.linear_solver).name;
     if (const Json* x = s->find("max_iterations")) scene.newton.max_iterations = x->as_int_at_least(1);
     if (const Json* x = s->find("relative_tolerance")) scene.newton.relative_tolerance = x->as_number_in(0, 1);
     if (const Json* x = s->find("line_search")) scene.newton.line_search = x->as_bool();

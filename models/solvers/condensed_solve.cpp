@@ -15,10 +15,13 @@ constexpr double kMinSchurReciprocalCondition = 1e-13;
 
 }  // namespace
 
+Registry<Condensation>& condensation_registry() {
+  static Registry<Condensation> registry("condensation", "solver.condensation");
+  return registry;
+}
+
 Condensation condensation_from_string(const std::string& name) {
-  if (name == "schur") return Condensation::Schur;
-  if (name == "columns") return Condensation::Columns;
-  fail("unknown condensation \"", name, "\"; known: schur, columns");
+  return condensation_registry().at(name, "condensation").create;
 }
 
 std::string to_string(Condensation method) { return method == Condensation::Schur ? "schur" : "columns"; }
@@ -178,3 +181,10 @@ Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std
 }
 
 }  // namespace pc
+
+PC_REGISTER(pc::condensation_registry(),
+            {"schur", "MUMPS Schur complement of the interior: one solve's worth of work per Newton iteration", {},
+             pc::Condensation::Schur})
+PC_REGISTER(pc::condensation_registry(),
+            {"columns", "Woodbury columns by solves with solver.linear: two solves per iteration", {},
+             pc::Condensation::Columns})

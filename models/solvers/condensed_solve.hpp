@@ -25,6 +25,7 @@
 #include <Eigen/LU>
 
 #include "assembly/linear_solver.hpp"
+#include "assembly/registry.hpp"
 #include "assembly/schur_complement.hpp"
 #include "models/solvers/linear_solve_cost.hpp"
 #include "models/solvers/nonlinear_problem.hpp"
@@ -32,7 +33,9 @@
 namespace pc {
 
 enum class Condensation { Schur, Columns };
-Condensation condensation_from_string(const std::string& name);  // "schur" | "columns"
+// The methods a scene can name (solver.condensation): "schur" | "columns".
+Registry<Condensation>& condensation_registry();
+Condensation condensation_from_string(const std::string& name);  // throws listing the registered names
 std::string to_string(Condensation method);
 
 struct CondensedStep {

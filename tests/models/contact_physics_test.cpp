@@ -132,7 +132,8 @@ struct Column {
 
 // Elasticity, pressure on top, roller on the left, and the given contact brick on the bottom;
 // quasi-static (no inertia, no viscosity).
-std::unique_ptr<Column> make_column(const ColumnSetup& s, std::shared_ptr<Brick> contact) {
+// `constants`: the contact law's parameters, which the contact brick reads from the model.
+std::unique_ptr<Column> make_column(const ColumnSetup& s, std::shared_ptr<Brick> contact, const ParameterValues& constants) {
   auto c = std::make_unique<Column>();
   c->mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {s.W, s.H}, s.nx, s.ny, s.shape));
   c->model = std::make_unique<Model>(c->mesh);
@@ -142,6 +143,7 @@ std::unique_ptr<Column> make_column(const ColumnSetup& s, std::shared_ptr<Brick>
   m.set_constant("B", isotropic_stiffness_from_young(2, s.young, s.poisson));
   m.add_brick(std::make_shared<ElasticityBrick>());
   m.add_brick(std::make_shared<TractionBrick>(std::vector<double>{0.0, -s.P}, "top"));
+  m.set_constants(constants);
   m.add_brick(std::move(contact));
   m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", "left", {0})));
   m.finalize();
@@ -187,7 +189,7 @@ TEST(CompressionColumn, LinearComplianceGivesTheClosedFormToRoundOff) {
       s.shape = shape;
       s.poisson = poisson;
       auto column =
-          make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>(NormalCompliance{c, 1, 0}, "bottom"));
+          make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>("bottom"), law_values(NormalCompliance{c, 1, 0}));
       NewtonSolver newton;
       const RunSummary run = Stepper(one_static_step()).run(*column->model, column->scheme, newton);
       ASSERT_TRUE(run.completed) << run.message;
@@ -212,7 +214,7 @@ TEST(CompressionColumn, QuadraticComplianceConvergesToTheClosedForm) {
   ColumnSetup s;
   s.poisson = 0.3;
   auto column =
-      make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>(NormalCompliance{c, 2, 0}, "bottom"));
+      make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>("bottom"), law_values(NormalCompliance{c, 2, 0}));
   Model& m = *column->model;
   // At u_nu = 0 the law's slope 2 c u_nu vanishes and the column floats: start Newton from a guess in
   // contact, deeper than the solution (v = u for one step of size 1 from u_prev = 0).
@@ -252,7 +254,7 @@ TEST(DampedColumn, SinksAtTheSpeedPressureOverDampingExactly) {
   ColumnSetup s;
   s.poisson = 0.25;
   auto column =
-      make_column(s, std::make_shared<NormalResponseBrick<LinearDampedResponse>>(LinearDampedResponse{c_nu}, "bottom"));
+      make_column(s, std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom"), law_values(LinearDampedResponse{c_nu}));
   StepperOptions o = one_static_step();
   o.end = 0.5;
   o.step = 0.1;
@@ -311,9 +313,10 @@ TEST(EnergyIdentity, BackwardEulerWithDissipativeContactLaws) {
   auto inertia = std::make_shared<InertiaBrick>();
   auto viscosity = std::make_shared<ViscosityBrick>();
   auto elasticity = std::make_shared<ElasticityBrick>();
-  auto normal = std::make_shared<NormalResponseBrick<LinearDampedResponse>>(LinearDampedResponse{1.0}, "bottom");
-  auto viscous = std::make_shared<FrictionBrick<ViscousFriction>>(ViscousFriction{0.3}, "bottom");
-  auto tresca = std::make_shared<FrictionBrick<RegularizedTresca>>(RegularizedTresca{0.05, 1e-2}, "bottom");
+  m.set_constants({{"c_nu", 1.0}, {"c_tau", 0.3}, {"g", 0.05}, {"eps", 1e-2}});
+  auto normal = std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom");
+  auto viscous = std::make_shared<FrictionBrick<ViscousFriction>>("bottom");
+  auto tresca = std::make_shared<FrictionBrick<RegularizedTresca>>("bottom");
   for (std::shared_ptr<Brick> b :
        std::vector<std::shared_ptr<Brick>>{inertia, viscosity, elasticity, normal, viscous, tresca})
     m.add_brick(b);
@@ -414,8 +417,8 @@ struct Strip {
     m->add_unknown("phi", std::make_shared<const FESpace>(mesh, 1, 1));
     m->set_constant("beta", isotropic_permittivity(2, beta));
     m->add_brick(std::make_shared<PermittivityBrick>());
-    m->add_brick(
-        std::make_shared<ConductiveFoundationBrick<LinearConductance>>(LinearConductance{k_e, phi_f}, "bottom"));
+    m->set_constants(law_values(LinearConductance{k_e, phi_f}));
+    m->add_brick(std::make_shared<ConductiveFoundationBrick<LinearConductance>>("bottom"));
     m->add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("phi", "top")));
     m->finalize();
     m->set_time(0);
@@ -465,7 +468,7 @@ TEST(ConductiveFoundation, ZeroConductanceInsulates) {
 
 // ---- 5. cached linear brick versus the generic nonlinear brick ------------------------------------------
 
-using ViscousKernel = FrictionKernel<ViscousFriction, NoNormalLaw>;
+using ViscousKernel = FrictionKernel<ViscousFriction>;
 
 std::shared_ptr<Brick> generic_viscous_friction(double c_tau) {
   return std::make_shared<WeakFormBrick<ViscousKernel>>(WeakForm{.name = "viscous friction (generic)",
@@ -475,7 +478,7 @@ std::shared_ptr<Brick> generic_viscous_friction(double c_tau) {
                                                                  .region = "bottom",
                                                                  .integration = Integration::Faces,
                                                                  .linear = false},
-                                                        ViscousKernel{ViscousFriction{c_tau}, NoNormalLaw{}, 0});
+                                                        ViscousKernel{std::make_shared<const ViscousFriction>(ViscousFriction{c_tau}), nullptr, 0});
 }
 
 struct FrictionPair {
@@ -484,10 +487,13 @@ struct FrictionPair {
   int friction = -1;
 };
 
-FrictionPair friction_model(std::shared_ptr<const Mesh> mesh, bool with_bulk, std::shared_ptr<Brick> friction) {
+// `constants`: the friction law's parameters, for a brick that reads them from the model.
+FrictionPair friction_model(std::shared_ptr<const Mesh> mesh, bool with_bulk, std::shared_ptr<Brick> friction,
+                            const ParameterValues& constants = {}) {
   FrictionPair p;
   p.model = std::make_unique<Model>(mesh);
   Model& m = *p.model;
+  m.set_constants(constants);
   m.add_unknown("v", std::make_shared<const FESpace>(mesh, 1, 2));
   if (with_bulk) {
     p.scheme = std::make_unique<BackwardEuler>();
@@ -524,8 +530,8 @@ TEST(CachedVersusGeneric, LinearFrictionThroughBothPathsIsIdentical) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
   const double c_tau = 0.8;
   for (const bool with_bulk : {false, true}) {
-    auto cached = friction_model(mesh, with_bulk,
-                                 std::make_shared<FrictionBrick<ViscousFriction>>(ViscousFriction{c_tau}, "bottom"));
+    auto cached = friction_model(mesh, with_bulk, std::make_shared<FrictionBrick<ViscousFriction>>("bottom"),
+                                 {{"c_tau", c_tau}});
     auto generic = friction_model(mesh, with_bulk, generic_viscous_friction(c_tau));
     ASSERT_TRUE(cached.model->bricks()[cached.friction]->linear());
     ASSERT_FALSE(generic.model->bricks()[generic.friction]->linear());

@@ -26,18 +26,12 @@ Scene paper(std::vector<std::string> overrides = {}) {
   return load_scene_file(kScene, overrides);
 }
 
-FoundationSpec foundation(const Scene& scene, const std::string& name) {
-  for (const SceneFoundation& f : scene.foundations)
-    if (f.name == name) return f.spec;
-  ADD_FAILURE() << "the scene has no foundation '" << name << "'";
-  return {};
-}
 
 // The paper's spec with the foundation `name` ("insulated" or "conductive").
 PiezoContactSpec paper_spec(const std::string& name = "insulated") {
   const Scene scene = paper();
   PiezoContactSpec spec = scene.spec;
-  spec.foundation = foundation(scene, name);
+  spec.foundation = find_foundation(scene, name).law;
   return spec;
 }
 
@@ -123,9 +117,9 @@ TEST(Recipe, QuasiStaticModelHasNoInertiaBrickAndNoAccelerationFields) {
 }
 
 TEST(Recipe, FrictionNoneCreatesNoFrictionBrick) {
-  const Scene scene = paper({"contact.law_tangential=\"none\""});
-  EXPECT_EQ(scene.spec.friction.type, "none");
-  const PiezoContactModel built = build_piezo_contact_model(scene.spec);
+  PiezoContactSpec spec = paper_spec();
+  spec.friction = {"none", {}};
+  const PiezoContactModel built = build_piezo_contact_model(spec);
   const Model& m = *built.model;
   EXPECT_THAT(brick_names(m), UnorderedElementsAreArray(std::vector<std::string>{
                                   "elasticity (B) on all", "viscosity (A) on all", kInertia,
@@ -143,7 +137,7 @@ TEST(Recipe, NoContactRegionCreatesNoContactBricks) {
                                   "Dirichlet condition on v over left", "traction on top"} +
                               kElectric));
   EXPECT_TRUE(m.diagnostics().empty());
-  EXPECT_FALSE(static_cast<bool>(built.contact_pressure));
+  EXPECT_EQ(built.normal, nullptr);
 }
 
 // The paper's scene has f0 = [0, 0] and q0 = q_b = 0: no body-force or charge brick. Non-zero values

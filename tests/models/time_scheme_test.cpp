@@ -411,7 +411,7 @@ TEST(SchemeByName, FactoryRecipeAndSceneChooseTheScheme) {
     spec.rho = 1;
     spec.B = testing::scaled_pzt5h().B;
     spec.clamped = {"left"};
-    spec.scheme.type = type;
+    spec.scheme.name = type;
     const PiezoContactModel built = build_piezo_contact_model(spec);
     EXPECT_EQ(built.scheme->name(), type);
     std::map<std::string, FieldKind> kinds;
@@ -426,18 +426,22 @@ TEST(SchemeByName, FactoryRecipeAndSceneChooseTheScheme) {
 
   // Scenes: time.scheme and time.theta, validated with their paths.
   const std::string scene = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
-  EXPECT_EQ(load_scene_file(scene).spec.scheme.type, "backward_euler");
+  EXPECT_EQ(load_scene_file(scene).spec.scheme.name, "backward_euler");
   const Scene theta = load_scene_file(scene, {"time.scheme=theta", "time.theta=0.75"});
-  EXPECT_EQ(theta.spec.scheme.type, "theta");
-  EXPECT_EQ(theta.spec.scheme.theta, 0.75);
-  EXPECT_EQ(load_scene_file(scene, {"time.scheme=bdf2"}).spec.scheme.type, "bdf2");
+  EXPECT_EQ(theta.spec.scheme.name, "theta");
+  EXPECT_EQ(theta.spec.scheme.parameters.at("theta"), 0.75);
+  EXPECT_EQ(load_scene_file(scene, {"time.scheme=bdf2"}).spec.scheme.name, "bdf2");
   auto problem = [&](const std::vector<std::string>& overrides) {
     return testing::error_of([&] { load_scene_file(scene, overrides); });
   };
-  EXPECT_NE(problem({"time.scheme=leapfrog"}).find("'time.scheme' must be backward_euler"), std::string::npos)
+  EXPECT_NE(problem({"time.scheme=leapfrog"}).find("'time.scheme': unknown time scheme 'leapfrog' (known: "
+                                                  "backward_euler, bdf2, theta)"),
+            std::string::npos)
       << problem({"time.scheme=leapfrog"});
   EXPECT_NE(problem({"time.scheme=bdf2", "time.theta=0.5"}).find("time.theta"), std::string::npos);
-  EXPECT_NE(problem({"time.scheme=theta", "time.theta=0"}).find("must be in (0, 1]"), std::string::npos);
+  EXPECT_NE(problem({"time.scheme=theta", "time.theta=0"}).find("'time.theta': theta = 0 must be finite and in (0, 1]"),
+            std::string::npos)
+      << problem({"time.scheme=theta", "time.theta=0"});
   // --set may add a key the file omits, but a misspelt one is refused with the known keys.
   EXPECT_NE(problem({"time.schem=bdf2"}).find("unknown key 'time.schem'"), std::string::npos)
       << problem({"time.schem=bdf2"});
