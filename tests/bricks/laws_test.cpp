@@ -1,19 +1,28 @@
 // The contact and foundation laws, each through the law checker (Dual derivatives against finite
 // differences away from and at kinks, the affine and dissipative claims, finite values at extreme
-// arguments), their closed forms, their parameter checks; and the checker itself against laws that break
-// each of its rules.
+// arguments), their closed forms, their declared parameters and the bricks' refusal of out-of-range model
+// constants; and the checker itself against laws that break each of its rules.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "assembly/dual.hpp"
 #include "assembly/error.hpp"
+#include "assembly/parameters.hpp"
+#include "bricks/conductive_foundation_brick.hpp"
+#include "bricks/friction_brick.hpp"
 #include "bricks/laws/foundation_laws.hpp"
 #include "bricks/laws/friction_laws.hpp"
+#include "bricks/laws/law_parameters.hpp"
 #include "bricks/laws/normal_laws.hpp"
+#include "bricks/normal_response_brick.hpp"
+#include "bricks/testing/brick_checker.hpp"
 #include "bricks/testing/law_checker.hpp"
 
 namespace pc {
@@ -140,17 +149,17 @@ TEST(FrictionLaws, ClosedForms) {
 // ---- foundation laws ----------------------------------------------------------------------------------
 
 TEST(FoundationLaws, PassTheChecker) {
-  const PressureActivatedConductance<LinearDampedResponse> unit{1.0, -48.0, 1.0, {1e12}};
+  // The law reads the pressure as an argument; the normal law that produces it belongs to the normal brick.
+  const PressureActivatedConductance unit{1.0, -48.0, 1.0};
   const auto report = check_foundation_law(unit, {.name = "PressureActivatedConductance", .pressure_high = 4});
   EXPECT_TRUE(report.ok()) << report;
-  const PressureActivatedConductance<LinearDampedResponse> paper_scale{1.0, -48.0, 1e6, {1e12}};
+  const PressureActivatedConductance paper_scale{1.0, -48.0, 1e6};
   const auto scaled = check_foundation_law(paper_scale, {.name = "p_ref = 1e6", .pressure_high = 4e6});
   EXPECT_TRUE(scaled.ok()) << scaled;
 }
 
 TEST(FoundationLaws, ClosedForms) {
-  // Aggregate deduction picks the normal law's type.
-  const PressureActivatedConductance law{2.0, -48.0, 3.0, LinearDampedResponse{1e12}};
+  const PressureActivatedConductance law{2.0, -48.0, 3.0};
   EXPECT_EQ(law(2.0, 0.0), 0.0);   // no pressure, no current
   EXPECT_EQ(law(2.0, -5.0), 0.0);  // a negative pressure is no pressure
   EXPECT_DOUBLE_EQ(law(2.0, 3.0), 2.0 * 0.5 * 50.0);
@@ -158,40 +167,177 @@ TEST(FoundationLaws, ClosedForms) {
   EXPECT_TRUE(std::isfinite(law(1e150, 1e300)));
 }
 
-// ---- parameter checks ---------------------------------------------------------------------------------
+// ---- declared parameters --------------------------------------------------------------------------------
 
-// validate() throws pc::Error whose message names the brick, the parameter and its value.
+// What a declaration should say: the range, and the default (none: required).
+struct ExpectedParameter {
+  std::string name;
+  Range range;
+  std::optional<double> default_value;
+};
+
 template <class Law>
-void expect_rejected(const Law& law, const std::string& parameter_and_value) {
-  try {
-    law.validate("contact");
-    ADD_FAILURE() << "accepted a law with " << parameter_and_value;
-  } catch (const Error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("brick 'contact'"), std::string::npos) << what;
-    EXPECT_NE(what.find(parameter_and_value), std::string::npos) << what;
+void expect_declarations(const std::string& law, const std::vector<ExpectedParameter>& expected) {
+  const std::vector<ParameterDeclaration> declared = parameter_declarations<Law>();
+  ASSERT_EQ(declared.size(), expected.size()) << law;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    const ParameterDeclaration& d = declared[i];
+    const ExpectedParameter& e = expected[i];
+    const std::string where = law + " parameter " + e.name;
+    EXPECT_EQ(d.name, e.name) << where;
+    EXPECT_EQ(d.range.lower, e.range.lower) << where;
+    EXPECT_EQ(d.range.upper, e.range.upper) << where;
+    EXPECT_EQ(d.range.lower_open, e.range.lower_open) << where;
+    EXPECT_EQ(d.range.upper_open, e.range.upper_open) << where;
+    EXPECT_EQ(d.default_value, e.default_value) << where;
+    EXPECT_FALSE(d.unit.empty()) << where;
+    EXPECT_FALSE(d.doc.empty()) << where;
   }
 }
 
+// The declared ranges are the checks the laws' validate() made before the parameters moved into the
+// model: finite and >= 0 for coefficients, >= 1 for exponents, > 0 for p_ref and the regularisations,
+// finite for potentials and gaps.
+TEST(Laws, DeclaredRangesAreTheOldValidation) {
+  const Range nonnegative = Range::at_least(0), positive = Range::positive(), finite = Range::any();
+  expect_declarations<LinearDampedResponse>("LinearDampedResponse", {{"c_nu", nonnegative, {}}});
+  expect_declarations<PowerDampedResponse>("PowerDampedResponse",
+                                           {{"c_nu", nonnegative, {}}, {"m", Range::at_least(1), 1.0}});
+  expect_declarations<NormalCompliance>(
+      "NormalCompliance", {{"c_nu", nonnegative, {}}, {"m", Range::at_least(1), 1.0}, {"gap", finite, 0.0}});
+  expect_declarations<ViscousFriction>("ViscousFriction", {{"c_tau", nonnegative, {}}});
+  expect_declarations<RegularizedCoulomb>("RegularizedCoulomb", {{"mu", nonnegative, {}}, {"eps", positive, {}}});
+  expect_declarations<RegularizedTresca>("RegularizedTresca", {{"g", nonnegative, {}}, {"eps", positive, {}}});
+  expect_declarations<LinearConductance>("LinearConductance", {{"k_e", nonnegative, {}}, {"phi_f", finite, {}}});
+  expect_declarations<PressureActivatedConductance>(
+      "PressureActivatedConductance", {{"k_e", nonnegative, {}}, {"phi_f", finite, {}}, {"p_ref", positive, {}}});
+  // The ranges as the messages state them.
+  EXPECT_EQ(nonnegative.describe(), ">= 0");
+  EXPECT_EQ(positive.describe(), "> 0");
+  EXPECT_EQ(finite.describe(), "finite");
+  EXPECT_FALSE(finite.contains(kNaN));
+  EXPECT_FALSE(finite.contains(kInf));
+  EXPECT_FALSE(nonnegative.contains(kInf));
+  EXPECT_FALSE(positive.contains(0.0));
+  EXPECT_TRUE(nonnegative.contains(0.0));
+}
+
+TEST(Laws, ValuesByParameterName) {
+  EXPECT_EQ(law_values(LinearDampedResponse{1e12}), (ParameterValues{{"c_nu", 1e12}}));
+  EXPECT_EQ(law_values(NormalCompliance{1e9, 2.0, 0.1}), (ParameterValues{{"c_nu", 1e9}, {"m", 2.0}, {"gap", 0.1}}));
+  EXPECT_EQ(law_values(RegularizedCoulomb{0.3, 1e-3}), (ParameterValues{{"mu", 0.3}, {"eps", 1e-3}}));
+  EXPECT_EQ(law_values(PressureActivatedConductance{1.0, -48.0, 1e6}),
+            (ParameterValues{{"k_e", 1.0}, {"phi_f", -48.0}, {"p_ref", 1e6}}));
+  const ParameterNames names{{{"c_nu", "c_nu_left"}}};
+  EXPECT_EQ(names("c_nu"), "c_nu_left");
+  EXPECT_EQ(names("m"), "m");
+}
+
+// ---- parameter checks: the brick's update() refuses an out-of-range model constant ----------------------
+
+constexpr double kCNu = 1e12;
+
+template <class Law>
+concept ScalarLaw = requires(const Law& law) { law(0.0); };
+template <class Law>
+concept FoundationLaw = requires(const Law& law) { law(0.0, 0.0); };
+
+// The brick that reads a law's parameters, with the normal brick it is paired with (if the law reads the
+// contact pressure): a LinearDampedResponse reading c_nu.
+struct BricksOfLaw {
+  std::shared_ptr<Brick> brick;
+  std::shared_ptr<Brick> normal;
+};
+
+template <class Law>
+BricksOfLaw bricks_of_law(const ParameterNames& names) {
+  if constexpr (ScalarLaw<Law>) {
+    return {std::make_shared<NormalResponseBrick<Law>>("contact", ContactFields{}, names), nullptr};
+  } else {
+    std::shared_ptr<NormalResponseBrick<LinearDampedResponse>> normal;
+    if constexpr (law_uses_normal_pressure<Law>) normal = std::make_shared<NormalResponseBrick<LinearDampedResponse>>();
+    if constexpr (FoundationLaw<Law>)
+      return {std::make_shared<ConductiveFoundationBrick<Law>>("contact", normal, ContactFields{}, names), normal};
+    else
+      return {std::make_shared<FrictionBrick<Law>>("contact", normal, ContactFields{}, names), normal};
+  }
+}
+
+// The model constants holding the law's values under `names` (and c_nu for a paired normal brick).
+template <class Law>
+ConstantTable constants_of(const Law& law, const ParameterNames& names, bool paired) {
+  ConstantTable data;
+  for (const auto& [parameter, value] : law_values(law)) data.set(names(parameter), value);
+  if (paired) data.set("c_nu", kCNu);
+  return data;
+}
+
+// The brick's update() throws pc::Error whose message names the brick, the parameter, the model constant
+// and the value: under the parameter's own name, and renamed (the constant then differs from the parameter).
+template <class Law>
+void expect_rejected(const Law& law, const std::string& parameter, const std::string& value) {
+  for (const bool renamed : {false, true}) {
+    const std::string constant = renamed ? parameter + "_left" : parameter;
+    ParameterNames names;
+    if (renamed) names.renamed[parameter] = constant;
+    const BricksOfLaw b = bricks_of_law<Law>(names);
+    const ConstantTable data = constants_of(law, names, b.normal != nullptr);
+    if (b.normal) {
+      EXPECT_NO_THROW(b.normal->update(data));
+    }
+    try {
+      b.brick->update(data);
+      ADD_FAILURE() << "accepted the constant " << constant << " = " << value;
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("brick '" + b.brick->name() + "'"), std::string::npos) << what;
+      EXPECT_NE(what.find("model constant '" + constant + "'"), std::string::npos) << what;
+      EXPECT_NE(what.find(parameter + " = " + value + " must be finite"), std::string::npos) << what;
+    }
+  }
+}
+
+template <class Law>
+void expect_accepted(const Law& law) {
+  const BricksOfLaw b = bricks_of_law<Law>({});
+  const ConstantTable data = constants_of(law, {}, b.normal != nullptr);
+  if (b.normal) {
+    EXPECT_NO_THROW(b.normal->update(data));
+  }
+  EXPECT_NO_THROW(b.brick->update(data));
+}
+
 TEST(Laws, BadParametersAreRejectedByName) {
-  expect_rejected(LinearDampedResponse{-1.0}, "c_nu = -1");
-  expect_rejected(LinearDampedResponse{kNaN}, "c_nu = nan");
-  expect_rejected(PowerDampedResponse{1.0, 0.5}, "m = 0.5");
-  expect_rejected(PowerDampedResponse{kInf, 2.0}, "c_nu = inf");
-  expect_rejected(NormalCompliance{1.0, 1.0, kInf}, "gap = inf");
-  expect_rejected(NormalCompliance{-2.0, 1.0, 0.0}, "c = -2");
-  expect_rejected(ViscousFriction{-0.3}, "c_tau = -0.3");
-  expect_rejected(RegularizedCoulomb{-0.1, 1e-3}, "mu = -0.1");
-  expect_rejected(RegularizedCoulomb{0.3, 0.0}, "eps = 0");
-  expect_rejected(RegularizedTresca{-1.0, 1e-3}, "g = -1");
-  expect_rejected(RegularizedTresca{1.0, -1e-3}, "eps = -0.001");
-  expect_rejected(LinearConductance{-1.0, 0.0}, "k_e = -1");
-  expect_rejected(LinearConductance{1.0, kNaN}, "phi_f = nan");
-  expect_rejected(PressureActivatedConductance<>{1.0, -48.0, 0.0, {1e12}}, "p_ref = 0");
-  expect_rejected(PressureActivatedConductance<>{1.0, -48.0, 1.0, {-1e12}}, "c_nu = -1e+12");
+  expect_rejected(LinearDampedResponse{-1.0}, "c_nu", "-1");
+  expect_rejected(LinearDampedResponse{kNaN}, "c_nu", "nan");
+  expect_rejected(PowerDampedResponse{1.0, 0.5}, "m", "0.5");
+  expect_rejected(PowerDampedResponse{kInf, 2.0}, "c_nu", "inf");
+  expect_rejected(NormalCompliance{1.0, 1.0, kInf}, "gap", "inf");
+  expect_rejected(NormalCompliance{-2.0, 1.0, 0.0}, "c_nu", "-2");
+  expect_rejected(ViscousFriction{-0.3}, "c_tau", "-0.3");
+  expect_rejected(RegularizedCoulomb{-0.1, 1e-3}, "mu", "-0.1");
+  expect_rejected(RegularizedCoulomb{0.3, 0.0}, "eps", "0");
+  expect_rejected(RegularizedTresca{-1.0, 1e-3}, "g", "-1");
+  expect_rejected(RegularizedTresca{1.0, -1e-3}, "eps", "-0.001");
+  expect_rejected(LinearConductance{-1.0, 0.0}, "k_e", "-1");
+  expect_rejected(LinearConductance{1.0, kNaN}, "phi_f", "nan");
+  expect_rejected(PressureActivatedConductance{1.0, -48.0, 0.0}, "p_ref", "0");
+  // The pressure-activated law's normal law is the paired normal brick's: that brick refuses its c_nu.
+  expect_rejected(LinearDampedResponse{-1e12}, "c_nu", "-1e+12");
   // Zero coefficients are allowed: they switch a term off.
-  EXPECT_NO_THROW((LinearDampedResponse{0.0}.validate("contact")));
-  EXPECT_NO_THROW((RegularizedCoulomb{0.0, 1e-3}.validate("contact")));
+  expect_accepted(LinearDampedResponse{0.0});
+  expect_accepted(RegularizedCoulomb{0.0, 1e-3});
+  expect_accepted(PressureActivatedConductance{0.0, -48.0, 1e6});
+}
+
+TEST(Laws, AMissingConstantIsNamed) {
+  NormalResponseBrick<NormalCompliance> brick("contact", {}, ParameterNames{{{"gap", "gap_left"}}});
+  try {
+    brick.update(ConstantTable{}.set("c_nu", 1e9).set("m", 1.0));
+    ADD_FAILURE() << "updated without the constant gap_left";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'gap_left'"), std::string::npos) << e.what();
+  }
 }
 
 // ---- the checker catches laws that break its rules ------------------------------------------------------
@@ -245,7 +391,12 @@ TEST(LawChecker, CatchesEachBrokenRule) {
   EXPECT_FALSE(check_scalar_law(FalselyDissipative{}).ok());
   EXPECT_FALSE(check_scalar_law(Overflowing{}, {.extremes = {1e3}}).ok());
   EXPECT_FALSE(check_scalar_law(LeftSidedKink{}).ok());
-  EXPECT_FALSE(check_scalar_law(LinearDampedResponse{-1.0}).ok());  // validate() rejects it
+  // c_nu = -1 is outside the range the law declares.
+  const auto out_of_range = check_scalar_law(LinearDampedResponse{-1.0});
+  EXPECT_FALSE(out_of_range.ok());
+  std::ostringstream range_text;
+  range_text << out_of_range;
+  EXPECT_NE(range_text.str().find("c_nu = -1 must be finite and >= 0"), std::string::npos) << range_text.str();
   EXPECT_FALSE(check_friction_law(PressureBlindCoulomb{}).ok());
   EXPECT_FALSE(check_foundation_law(NonMonotoneFoundation{}).ok());
   const auto report = check_scalar_law(DetachedDerivative{}, {.name = "detached"});
