@@ -35,7 +35,7 @@ class BoundLaw {
       : law_(std::make_shared<Law>()), names_(std::move(names)) {}
   explicit BoundLaw(Law fixed)
     requires(!DeclaresParameters<Law>)
-      : law_(std::make_shared<Law>(std::move(fixed))) {}
+      : law_(std::make_shared<Law>(std::move(fixed))), updated_(true) {}
 
   // The model constants the law reads (none for a fixed law).
   std::vector<std::string> data() const {
@@ -52,21 +52,31 @@ class BoundLaw {
       size_t i = 0;
       for (const auto& p : Law::parameters()) {
         const std::string constant = names_(p.name);
-        const double value = data.scalar(constant);
+        double value = 0;
+        try {
+          value = data.scalar(constant);
+        } catch (const Error& e) {
+          fail("brick '", brick, "' reads its parameter ", p.name, " from the model constant '", constant, "': ",
+               e.what());
+        }
         check_parameter(declarations[i++], value,
                         message("brick '", brick, "' (model constant '", constant, "')"));
         law.*(p.member) = value;
       }
       *law_ = law;
     }
+    updated_ = true;
     (void)data, (void)brick;
   }
+  // Whether the law holds its parameters: fixed, or read by update() at least once.
+  bool updated() const { return updated_; }
   const Law& operator*() const { return *law_; }
   std::shared_ptr<const Law> shared() const { return law_; }
 
  private:
   std::shared_ptr<Law> law_;
   ParameterNames names_;
+  bool updated_ = false;
 };
 
 }  // namespace pc

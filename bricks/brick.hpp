@@ -50,7 +50,8 @@ class Brick {
   // Names of model constants the brick reads; a change of any of them invalidates its cached assembly.
   virtual std::vector<std::string> data() const { return {}; }
   // (Re)builds the brick's terms from the model's constants. Called when the brick is added and whenever
-  // a datum it reads changes; terms() is valid after it.
+  // a datum it reads changes; terms() is valid after it (a brick may build its
+  // terms earlier and only change what they read here, so that a parameter change keeps its pattern).
   virtual void update(const DataView& data) { (void)data; }
   // The terms to integrate, each over a region of the model's mesh.
   virtual std::vector<BrickTerm> terms() const = 0;

@@ -63,7 +63,7 @@ class ConductiveFoundationBrick : public Brick {
   ConductiveFoundationBrick(BoundLaw<Law> law, std::string region, std::shared_ptr<const NormalPressure> normal,
                             ContactFields fields)
       : region_(std::move(region)), law_(std::move(law)), normal_(std::move(normal)) {
-    require_pairing(law_uses_normal_pressure<Law>, normal_.get(), name());
+    require_pairing(law_uses_normal_pressure<Law>, normal_.get(), name(), region_);
     std::vector<FieldUse> uses = {{fields.potential}};
     std::vector<Coupling> couplings = {{0, 0}};
     if (normal_) {

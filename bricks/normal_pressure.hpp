@@ -26,6 +26,8 @@ class NormalPressure {
   virtual bool reads_displacement() const = 0;
   // The model constants the law reads: a brick that reads p_nu depends on them too.
   virtual std::vector<std::string> law_data() const = 0;
+  // The face region the pressure acts on; a brick paired with it must integrate over the same one.
+  virtual const std::string& region() const = 0;
   // The model field the law reads.
   const std::string& argument_field(const ContactFields& names) const {
     return reads_displacement() ? names.displacement : names.velocity;
@@ -43,10 +45,7 @@ class NormalPressure {
 
 // A normal contact brick: a brick that is also the NormalPressure of its surface (NormalResponseBrick<Law>
 // for any law); what the normal-law registry makes, so that friction and foundation bricks can pair with it.
-class NormalContactBrick : public Brick, public NormalPressure {
- public:
-  virtual const std::string& region() const = 0;
-};
+class NormalContactBrick : public Brick, public NormalPressure {};
 
 // A brick that reads p_nu depends on the normal law's constants as well as on its own law's.
 inline std::vector<std::string> paired_data(std::vector<std::string> law_data, const NormalPressure* normal) {
@@ -56,10 +55,13 @@ inline std::vector<std::string> paired_data(std::vector<std::string> law_data, c
 }
 
 // A law that reads the contact pressure needs the normal brick of its surface, and only such a law takes one.
-inline void require_pairing(bool reads_pressure, const NormalPressure* normal, const std::string& brick) {
+inline void require_pairing(bool reads_pressure, const NormalPressure* normal, const std::string& brick,
+                            const std::string& region) {
   require(reads_pressure == (normal != nullptr), "brick '", brick, "': ",
           reads_pressure ? "the law reads the contact pressure: pair it with the normal brick of its surface"
                          : "the law reads no contact pressure: it takes no normal brick");
+  require(!normal || normal->region() == region, "brick '", brick, "' is paired with the normal brick of region '",
+          normal ? normal->region() : "", "': the pressure it reads must act on its own region '", region, "'");
 }
 
 }  // namespace pc

@@ -59,6 +59,8 @@ class NormalResponseBrick : public NormalContactBrick {
   const std::string& region() const override { return region_; }
 
   double pressure(double r, double* slope) const override {
+    require(law_.updated(), "brick '", name(), "': its pressure was read before update() read its law's parameters "
+            "(add the normal brick to the model, or update it, before the bricks paired with it are assembled)");
     const Dual<1> p = (*law_)(Dual<1>::variable(r, 0));
     *slope = p.d[0];
     return p.v;

@@ -11,7 +11,7 @@
 //   }
 //
 // Checked, each as the options set:
-//  - the law's validate() accepts it;
+//  - the law's parameter values lie in the ranges it declares (a law that declares none passes);
 //  - its Dual derivatives against central finite differences at random arguments away from kinks, and at
 //    each kink against right-sided finite differences (the library's laws take the right-sided derivative);
 //  - its `affine` claim: f(x) = f(0) + f'(0) x at random x;
