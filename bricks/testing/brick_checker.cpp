@@ -207,6 +207,11 @@ ConstantTable& ConstantTable::set(const std::string& name, double value) {
   return set(name, Eigen::MatrixXd::Constant(1, 1, value));
 }
 
+ConstantTable& ConstantTable::set(const ParameterValues& values) {
+  for (const auto& [name, value] : values) set(name, value);
+  return *this;
+}
+
 const Eigen::MatrixXd& ConstantTable::constant(const std::string& name) const {
   const auto it = values_.find(name);
   if (it == values_.end()) {

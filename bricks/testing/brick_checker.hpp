@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "assembly/fe_space.hpp"
+#include "assembly/parameters.hpp"
 #include "bricks/brick.hpp"
 
 namespace pc {
@@ -23,6 +24,8 @@ class ConstantTable : public DataView {
  public:
   ConstantTable& set(const std::string& name, Eigen::MatrixXd value);
   ConstantTable& set(const std::string& name, double value);
+  // Scalars by name, e.g. a law's parameters: set(law_values(LinearDampedResponse{1e12})).
+  ConstantTable& set(const ParameterValues& values);
   const Eigen::MatrixXd& constant(const std::string& name) const override;
 
  private:
