@@ -11,10 +11,7 @@
 #include <vector>
 
 #include "assembly/pointwise_term.hpp"
-#include "bricks/bound_law.hpp"
-#include "bricks/brick.hpp"
-#include "bricks/laws/law_traits.hpp"
-#include "bricks/normal_pressure.hpp"
+#include "bricks/paired_law_brick.hpp"
 
 namespace pc {
 
@@ -33,7 +30,9 @@ struct ConductiveFoundationKernel {
 };
 
 template <class Law>
-class ConductiveFoundationBrick : public Brick {
+class ConductiveFoundationBrick : public PairedLawBrick<Law> {
+  using Base = PairedLawBrick<Law>;
+
  public:
   // Parameters read from the model's constants; `normal` is the paired normal brick, for a law that reads
   // the contact pressure (and only for one).
@@ -50,35 +49,25 @@ class ConductiveFoundationBrick : public Brick {
       : ConductiveFoundationBrick(BoundLaw<Law>(std::move(law)), std::move(region), std::move(normal),
                                   std::move(fields)) {}
 
-  std::string name() const override { return "conductive foundation on " + region_; }
-  std::vector<std::string> data() const override { return paired_data(law_.data(), normal_.get()); }
-  void update(const DataView& data) override { law_.update(data, name()); }
-  std::vector<BrickTerm> terms() const override { return {{term_, region_}}; }
-  bool linear() const override { return law_affine<Law>; }
+  std::string name() const override { return "conductive foundation on " + this->region_; }
   // k_e s(p) N_i N_j is symmetric; the (phi, v) block has no (v, phi) partner.
   bool symmetric() const override { return !law_uses_normal_pressure<Law>; }
-  const Law& law() const { return *law_; }
 
  private:
   ConductiveFoundationBrick(BoundLaw<Law> law, std::string region, std::shared_ptr<const NormalPressure> normal,
                             ContactFields fields)
-      : region_(std::move(region)), law_(std::move(law)), normal_(std::move(normal)) {
-    require_pairing(law_uses_normal_pressure<Law>, normal_.get(), name(), region_);
+      : Base(std::move(law), std::move(region), std::move(normal)) {
+    this->require_pairing_of(name());
     std::vector<FieldUse> uses = {{fields.potential}};
     std::vector<Coupling> couplings = {{0, 0}};
-    if (normal_) {
-      uses.push_back({normal_->argument_field(fields)});
+    if (this->normal_) {
+      uses.push_back({this->normal_->argument_field(fields)});
       couplings.push_back({0, 1});
     }
-    term_ = std::make_shared<PointwiseTerm<ConductiveFoundationKernel<Law>>>(
+    this->term_ = std::make_shared<PointwiseTerm<ConductiveFoundationKernel<Law>>>(
         name(), Integration::Faces, std::move(uses), std::vector<int>{0}, std::move(couplings),
-        ConductiveFoundationKernel<Law>{law_.shared(), normal_});
+        ConductiveFoundationKernel<Law>{this->law_.shared(), this->normal_});
   }
-
-  std::string region_;
-  BoundLaw<Law> law_;
-  std::shared_ptr<const NormalPressure> normal_;
-  std::shared_ptr<const Term> term_;
 };
 
 }  // namespace pc

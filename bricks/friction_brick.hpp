@@ -13,10 +13,7 @@
 #include <vector>
 
 #include "assembly/pointwise_term.hpp"
-#include "bricks/bound_law.hpp"
-#include "bricks/brick.hpp"
-#include "bricks/laws/law_traits.hpp"
-#include "bricks/normal_pressure.hpp"
+#include "bricks/paired_law_brick.hpp"
 
 namespace pc {
 
@@ -40,7 +37,9 @@ struct FrictionKernel {
 };
 
 template <class Law>
-class FrictionBrick : public Brick {
+class FrictionBrick : public PairedLawBrick<Law> {
+  using Base = PairedLawBrick<Law>;
+
  public:
   // Parameters read from the model's constants; `normal` is the paired normal brick, for a law that reads
   // the contact pressure (and only for one).
@@ -54,38 +53,27 @@ class FrictionBrick : public Brick {
     requires(!DeclaresParameters<Law>)
       : FrictionBrick(BoundLaw<Law>(std::move(law)), std::move(region), std::move(normal), std::move(fields)) {}
 
-  std::string name() const override { return "friction on " + region_; }
-  // The law's constants and, for a Coulomb law, the normal law's: a new c_nu changes this brick too.
-  std::vector<std::string> data() const override { return paired_data(law_.data(), normal_.get()); }
-  void update(const DataView& data) override { law_.update(data, name()); }
-  std::vector<BrickTerm> terms() const override { return {{term_, region_}}; }
-  bool linear() const override { return law_affine<Law>; }
+  std::string name() const override { return "friction on " + this->region_; }
   // P J P with J = dp_tau/dv_tau is symmetric when J is; the pressure coupling p_tau' (dp_nu/dv) is not.
   bool symmetric() const override { return law_symmetric<Law> && !law_uses_normal_pressure<Law>; }
-  const Law& law() const { return *law_; }
 
  private:
   FrictionBrick(BoundLaw<Law> law, std::string region, std::shared_ptr<const NormalPressure> normal,
                 ContactFields fields)
-      : region_(std::move(region)), law_(std::move(law)), normal_(std::move(normal)) {
-    require_pairing(law_uses_normal_pressure<Law>, normal_.get(), name(), region_);
+      : Base(std::move(law), std::move(region), std::move(normal)) {
+    this->require_pairing_of(name());
     std::vector<FieldUse> uses = {{fields.velocity}};
     std::vector<Coupling> couplings = {{0, 0}};
     int pressure_argument = 0;
-    if (normal_ && normal_->reads_displacement()) {
+    if (this->normal_ && this->normal_->reads_displacement()) {
       uses.push_back({fields.displacement});
       couplings.push_back({0, 1});
       pressure_argument = 1;
     }
-    term_ = std::make_shared<PointwiseTerm<FrictionKernel<Law>>>(
+    this->term_ = std::make_shared<PointwiseTerm<FrictionKernel<Law>>>(
         name(), Integration::Faces, std::move(uses), std::vector<int>{0}, std::move(couplings),
-        FrictionKernel<Law>{law_.shared(), normal_, pressure_argument});
+        FrictionKernel<Law>{this->law_.shared(), this->normal_, pressure_argument});
   }
-
-  std::string region_;
-  BoundLaw<Law> law_;
-  std::shared_ptr<const NormalPressure> normal_;
-  std::shared_ptr<const Term> term_;
 };
 
 }  // namespace pc
