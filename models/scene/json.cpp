@@ -22,15 +22,6 @@ namespace {
 
 using nlohmann::ordered_json;
 
-const char* type_name(const ordered_json& value) {
-  if (value.is_null()) return "null";
-  if (value.is_boolean()) return "a boolean";
-  if (value.is_number()) return "a number";
-  if (value.is_string()) return "a string";
-  if (value.is_array()) return "an array";
-  return "an object";
-}
-
 // "'contact.c_nu'", or "the root" for the document itself.
 std::string where(const std::string& path) { return path.empty() ? std::string("the root") : "'" + path + "'"; }
 
@@ -54,6 +45,15 @@ std::string format_number(double value) {
   return std::string(buffer, result.ptr);
 }
 
+// The type and, for a scalar, the value: "the string \"1e12\"", "the number -1", "an object".
+std::string describe(const ordered_json& value) {
+  if (value.is_null()) return "null";
+  if (value.is_boolean()) return std::string("the boolean ") + (value.get<bool>() ? "true" : "false");
+  if (value.is_number()) return "the number " + format_number(value.get<double>());
+  if (value.is_string()) return "the string " + value.dump();
+  return value.is_array() ? "an array" : "an object";
+}
+
 std::vector<std::string> keys_of(const ordered_json& object) {
   std::vector<std::string> keys;
   for (const auto& member : object.items()) keys.push_back(member.key());
@@ -73,8 +73,8 @@ std::string out_of_range(const std::string& number, const std::string& path) {
          " is out of the range of a double (nonzero magnitudes from 4.9e-324 to 1.8e308)";
 }
 
-// nlohmann prints 7800.0, -0.0 and Grisu2 digits; a scene reads better with the numbers of format_number.
-// Everything else, strings and their escapes included, nlohmann writes.
+// nlohmann prints the double 7800 as 7800.0 and 1e12 as 1000000000000.0; a scene reads better with the
+// numbers of format_number. Everything else, strings and their escapes included, nlohmann writes.
 void write(std::string& out, const ordered_json& value, int indent, int depth) {
   const auto newline = [&](int level) {
     if (indent <= 0) return;
@@ -184,7 +184,8 @@ class StrictBuilder final : public nlohmann::json_sax<ordered_json> {
   bool end_array() override { return close(); }
 
   // `bytes_read` counts the bytes read up to and including the one that failed.
-  bool parse_error(std::size_t bytes_read, const std::string& last_token, const ordered_json::exception& error) override {
+  bool parse_error(std::size_t bytes_read, const std::string& last_token,
+                   const ordered_json::exception& error) override {
     const std::size_t failed = bytes_read > 0 ? bytes_read - 1 : 0;
     // nlohmann's out_of_range 406 is a number beyond a double, and its last token is that number.
     if (error.id == 406)
@@ -353,7 +354,7 @@ bool Json::is_array() const { return value_->json.is_array(); }
 bool Json::is_object() const { return value_->json.is_object(); }
 
 void Json::fail_type(const char* expected) const {
-  fail("scene: ", where(path_), " must be ", expected, ", got ", type_name(value_->json));
+  fail("scene: ", where(path_), " must be ", expected, ", got ", describe(value_->json));
 }
 
 void Json::expect_object() const {
@@ -390,7 +391,8 @@ std::string Json::as_string() const {
 std::vector<Json> Json::as_array() const {
   expect_array();
   std::vector<Json> items;
-  for (std::size_t i = 0; i < value_->json.size(); ++i) items.push_back(Json(Value{value_->json[i]}, item_path(path_, i)));
+  for (std::size_t i = 0; i < value_->json.size(); ++i)
+    items.push_back(Json(Value{value_->json[i]}, item_path(path_, i)));
   return items;
 }
 
@@ -519,14 +521,14 @@ void Json::set_path(const std::string& dotted_path, Json value, NewKeys new_keys
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const PathStep& step = steps[i];
     if (step.is_index) {
-      require(node->is_array(), "scene: cannot set '", dotted_path, "': ", where(node_path), " is ", type_name(*node),
+      require(node->is_array(), "scene: cannot set '", dotted_path, "': ", where(node_path), " is ", describe(*node),
               ", not an array");
       require(step.index < node->size(), "scene: cannot set '", dotted_path, "': ", where(node_path), " has ",
               node->size(), " entries");
       node = &(*node)[step.index];
       node_path = item_path(node_path, step.index);
     } else {
-      require(node->is_object(), "scene: cannot set '", dotted_path, "': ", where(node_path), " is ", type_name(*node),
+      require(node->is_object(), "scene: cannot set '", dotted_path, "': ", where(node_path), " is ", describe(*node),
               ", not an object");
       const bool may_add = i + 1 == steps.size() && new_keys == NewKeys::allow;
       if (!node->contains(step.key) && !may_add)
@@ -585,7 +587,8 @@ Json parse_json_value_from_cli(const std::string& text, const std::string& sourc
 std::vector<std::string> unknown_keys(const Json& object, const std::vector<std::string>& allowed) {
   std::vector<std::string> unknown;
   for (const std::string& key : object.keys())
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) unknown.push_back(child_path(object.path(), key));
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      unknown.push_back(child_path(object.path(), key));
   return unknown;
 }
 

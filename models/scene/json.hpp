@@ -3,7 +3,7 @@
 // Every value remembers its path from the document root ("contact.c_nu", "material.elasticity_B[1][2]"),
 // so that a typed accessor that finds the wrong type, a missing key or an out-of-range number throws a
 // pc::Error that names the field:
-//   scene: 'contact.c_nu' must be a number, got a string
+//   scene: 'contact.c_nu' must be a number, got the string "1e12"
 // Objects keep the order of their keys, so that a scene read and written back diffs only where it changed.
 // Numbers are finite doubles: JSON has no NaN or infinity, and a Json never holds one.
 // Children are returned by value (a copy of the subtree with its path): scene documents are small.
@@ -60,7 +60,8 @@ class Json {
   // Dotted path from the document root; empty for the root itself.
   const std::string& path() const { return path_; }
 
-  // Typed accessors: each throws a pc::Error naming the path, the expected and the actual type.
+  // Typed accessors: each throws a pc::Error naming the path, the expected and the actual type, and the
+  // value when it is a scalar.
   bool as_bool() const;
   double as_number() const;
   // An integral number within the range of int.

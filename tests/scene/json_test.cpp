@@ -106,16 +106,18 @@ TEST(Json, ValuesKnowTheirPath) {
 TEST(Json, TypeErrorsNameThePath) {
   const Json root = parse_json(R"({"contact": {"c_nu": "1e12", "flag": 1}, "list": [1, "x"]})", "s.json");
   EXPECT_EQ(error_of([&] { root["contact"]["c_nu"].as_number(); }),
-            "scene: 'contact.c_nu' must be a number, got a string");
+            "scene: 'contact.c_nu' must be a number, got the string \"1e12\"");
   EXPECT_EQ(error_of([&] { root["contact"]["flag"].as_bool(); }),
-            "scene: 'contact.flag' must be a boolean, got a number");
+            "scene: 'contact.flag' must be a boolean, got the number 1");
   EXPECT_EQ(error_of([&] { root["contact"].as_string(); }), "scene: 'contact' must be a string, got an object");
   EXPECT_EQ(error_of([&] { root["contact"]["c_nu"]["x"]; }),
-            "scene: 'contact.c_nu' must be an object, got a string");
-  EXPECT_EQ(error_of([&] { root["list"].as_vector(); }), "scene: 'list[1]' must be a number, got a string");
+            "scene: 'contact.c_nu' must be an object, got the string \"1e12\"");
+  EXPECT_EQ(error_of([&] { root["list"].as_vector(); }), "scene: 'list[1]' must be a number, got the string \"x\"");
   EXPECT_EQ(error_of([&] { root.as_array(); }), "scene: the root must be an array, got an object");
   EXPECT_EQ(error_of([&] { root["contact"]["flag"].size(); }),
-            "scene: 'contact.flag' must be an array or an object, got a number");
+            "scene: 'contact.flag' must be an array or an object, got the number 1");
+  EXPECT_EQ(error_of([&] { parse_json("[false]", "s")[0].as_number(); }),
+            "scene: '[0]' must be a number, got the boolean false");
   EXPECT_EQ(error_of([&] { parse_json("null", "s")["x"]; }), "scene: the root must be an object, got null");
 }
 
@@ -154,9 +156,10 @@ TEST(Json, MatrixErrorsNameTheRow) {
                                "s");
   EXPECT_EQ(error_of([&] { root["m"]["ragged"].as_matrix(); }),
             "scene: 'm.ragged' must be a matrix, but row 1 has 2 entries and row 0 has 3");
-  EXPECT_EQ(error_of([&] { root["m"]["text"].as_matrix(); }), "scene: 'm.text[1][1]' must be a number, got a string");
+  EXPECT_EQ(error_of([&] { root["m"]["text"].as_matrix(); }),
+            "scene: 'm.text[1][1]' must be a number, got the string \"x\"");
   EXPECT_EQ(error_of([&] { root["m"]["flat"].as_matrix(); }),
-            "scene: 'm.flat[0]' must be an array of numbers, got a number");
+            "scene: 'm.flat[0]' must be an array of numbers, got the number 1");
   EXPECT_EQ(error_of([&] { root["m"]["empty"].as_matrix(); }), "scene: 'm.empty' must be a matrix, got an empty array");
   EXPECT_EQ(error_of([&] { root["m"]["empty_row"].as_matrix(); }),
             "scene: 'm.empty_row' must be a matrix, got an empty row 0");
@@ -185,12 +188,14 @@ TEST(Json, ParseErrorsGiveLineAndColumn) {
   // The column is that of the byte where the parser saw the error; the message is nlohmann's.
   EXPECT_EQ(parse_error("{\n  \"a\": 1,\n  \"b\" 2\n}"),
             "in.json:3:7: syntax error while parsing object separator - unexpected number literal; expected ':'");
-  EXPECT_EQ(parse_error("{\"a\": [1, 2}"), "in.json:1:12: syntax error while parsing array - unexpected '}'; expected ']'");
+  EXPECT_EQ(parse_error("{\"a\": [1, 2}"),
+            "in.json:1:12: syntax error while parsing array - unexpected '}'; expected ']'");
   EXPECT_EQ(parse_error("{\"a\": 1 \"b\": 2}"),
             "in.json:1:11: syntax error while parsing object - unexpected string literal; expected '}'");
   EXPECT_EQ(parse_error(""),
             "in.json:1:1: syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal");
-  EXPECT_EQ(parse_error("[1, 2"), "in.json:1:6: syntax error while parsing array - unexpected end of input; expected ']'");
+  EXPECT_EQ(parse_error("[1, 2"),
+            "in.json:1:6: syntax error while parsing array - unexpected end of input; expected ']'");
   EXPECT_EQ(parse_error("{\"a\": \"x"),
             "in.json:1:9: syntax error while parsing value - invalid string: missing closing quote; last read: '\"x'");
   EXPECT_EQ(parse_error("1 2"),
@@ -214,31 +219,37 @@ TEST(Json, IsStrict) {
             "in.json:1:7: syntax error while parsing value - unexpected ']'; expected '[', '{', or a literal");
   EXPECT_EQ(parse_error("{\"a\": 1,}"),
             "in.json:1:9: syntax error while parsing object key - unexpected '}'; expected string literal");
-  EXPECT_EQ(parse_error("// scene\n{}"), "in.json:1:1: syntax error while parsing value - invalid literal; last read: '/'");
+  EXPECT_EQ(parse_error("// scene\n{}"),
+            "in.json:1:1: syntax error while parsing value - invalid literal; last read: '/'");
   EXPECT_EQ(parse_error("{\"a\": 1 /* x */}"),
             "in.json:1:9: syntax error while parsing object - invalid literal; last read: '1 /'; expected '}'");
-  EXPECT_EQ(parse_error("[/* x */ 1]"), "in.json:1:2: syntax error while parsing value - invalid literal; last read: '[/'");
+  EXPECT_EQ(parse_error("[/* x */ 1]"),
+            "in.json:1:2: syntax error while parsing value - invalid literal; last read: '[/'");
   EXPECT_EQ(parse_error("012"),
             "in.json:1:3: syntax error while parsing value - unexpected number literal; expected end of input");
   EXPECT_EQ(parse_error("-01"),
             "in.json:1:3: syntax error while parsing value - unexpected number literal; expected end of input");
   EXPECT_EQ(parse_error("{a: 1}"),
-            "in.json:1:2: syntax error while parsing object key - invalid literal; last read: '{a'; expected string literal");
+            "in.json:1:2: syntax error while parsing object key - invalid literal; last read: '{a'; "
+            "expected string literal");
   EXPECT_EQ(parse_error("['a']"), "in.json:1:2: syntax error while parsing value - invalid literal; last read: '[''");
   EXPECT_EQ(parse_error("TRUE"), "in.json:1:1: syntax error while parsing value - invalid literal; last read: 'T'");
   EXPECT_EQ(parse_error("truex"),
-            "in.json:1:5: syntax error while parsing value - invalid literal; last read: 'truex'; expected end of input");
+            "in.json:1:5: syntax error while parsing value - invalid literal; last read: 'truex'; "
+            "expected end of input");
   for (const char* bad : {"+1", ".5", "1.", "1.e3", "1e", "1e+", "-", "0x10", "1_000"})
     EXPECT_THAT(parse_error(bad), HasSubstr("in.json:1:")) << bad;
-  EXPECT_EQ(parse_error("\"a\tb\""), "in.json:1:3: syntax error while parsing value - invalid string: control character "
-                                     "U+0009 (HT) must be escaped to \\u0009 or \\t; last read: '\"a<U+0009>'");
+  EXPECT_EQ(parse_error("\"a\tb\""), "in.json:1:3: syntax error while parsing value - invalid string: control "
+                                     "character U+0009 (HT) must be escaped to \\u0009 or \\t; "
+                                     "last read: '\"a<U+0009>'");
   EXPECT_EQ(parse_error("\"\\x\""), "in.json:1:3: syntax error while parsing value - invalid string: forbidden "
                                     "character after backslash; last read: '\"\\x'");
   const std::string bad_utf8 = "syntax error while parsing value - invalid string: ill-formed UTF-8 byte; last read: ";
   EXPECT_EQ(parse_error("\"\xC3\""), "in.json:1:3: " + bad_utf8 + "'\"\xC3\"'");
   EXPECT_EQ(parse_error("\"\xC0\xAF\""), "in.json:1:2: " + bad_utf8 + "'\"\xC0'");          // overlong '/'
   EXPECT_EQ(parse_error("\"\xED\xA0\x80\""), "in.json:1:3: " + bad_utf8 + "'\"\xED\xA0'");  // encoded surrogate
-  EXPECT_EQ(parse_error("\f1"), "in.json:1:1: syntax error while parsing value - invalid literal; last read: '<U+000C>'");
+  EXPECT_EQ(parse_error("\f1"),
+            "in.json:1:1: syntax error while parsing value - invalid literal; last read: '<U+000C>'");
   EXPECT_EQ(parse_error(std::string(300, '[') + std::string(300, ']')), "in.json: nesting deeper than 256 levels");
   EXPECT_EQ(parse_json(std::string(256, '[') + std::string(256, ']'), "s").size(), 1u);
 
@@ -259,7 +270,8 @@ TEST(Json, DecodesEscapes) {
   EXPECT_EQ(parse_error(R"("\ud83d")"), "in.json:1:8: " + unpaired_high + "; last read: '\"\\ud83d\"'");
   EXPECT_EQ(parse_error(R"("\ud83d\u0041")"), "in.json:1:13: " + unpaired_high + "; last read: '\"\\ud83d\\u0041'");
   EXPECT_EQ(parse_error(R"("\ude00")"),
-            "in.json:1:7: " + bad_string + "surrogate U+DC00..U+DFFF must follow U+D800..U+DBFF; last read: '\"\\ude00'");
+            "in.json:1:7: " + bad_string +
+                "surrogate U+DC00..U+DFFF must follow U+D800..U+DBFF; last read: '\"\\ude00'");
   EXPECT_EQ(parse_error(R"("\u12G4")"),
             "in.json:1:6: " + bad_string + "'\\u' must be followed by 4 hex digits; last read: '\"\\u12G'");
 }
@@ -341,7 +353,7 @@ TEST(Json, BuildsValues) {
 
   EXPECT_EQ(error_of([] { Json::object({{"a", 1}, {"a", 2}}); }), "scene: duplicate key 'a'");
   EXPECT_EQ(error_of([] { Json{std::string("\xFF")}; }), "scene: a string is not valid UTF-8");
-  EXPECT_EQ(error_of([] { Json(1).push_back(2); }), "scene: the root must be an array, got a number");
+  EXPECT_EQ(error_of([] { Json(1).push_back(2); }), "scene: the root must be an array, got the number 1");
 }
 
 TEST(Json, SetPathReplacesNestedValues) {
@@ -387,7 +399,8 @@ TEST(Json, SetPathErrors) {
   EXPECT_EQ(set("contatc.c_nu", Json::NewKeys::allow),
             "scene: unknown key 'contatc' (known: contact, foundation, geometry, material, name, "
             "reference_discretization, time)");
-  EXPECT_EQ(set("contact.c_nu.x"), "scene: cannot set 'contact.c_nu.x': 'contact.c_nu' is a number, not an object");
+  EXPECT_EQ(set("contact.c_nu.x"),
+            "scene: cannot set 'contact.c_nu.x': 'contact.c_nu' is the number 1000000000000, not an object");
   EXPECT_EQ(set("contact[0]"), "scene: cannot set 'contact[0]': 'contact' is an object, not an array");
   EXPECT_EQ(set("time.u0.x"), "scene: cannot set 'time.u0.x': 'time.u0' is an array, not an object");
   EXPECT_EQ(set("time.u0[2]"), "scene: cannot set 'time.u0[2]': 'time.u0' has 2 entries");
@@ -428,7 +441,8 @@ TEST(Json, ParsesCommandLineValues) {
   const std::string range = " is out of the range of a double (nonzero magnitudes from 4.9e-324 to 1.8e308)";
   for (const std::string number : {"1e400", "1e-400", "-1e400"}) {
     const std::string at = number == "1e-400" ? "--set contact.c_nu: " : "--set contact.c_nu:1:1: ";
-    EXPECT_EQ(error_of([&] { parse_json_value_from_cli(number, "--set contact.c_nu"); }), at + "number " + number + range);
+    EXPECT_EQ(error_of([&] { parse_json_value_from_cli(number, "--set contact.c_nu"); }),
+              at + "number " + number + range);
   }
   EXPECT_EQ(error_of([] { parse_json_value_from_cli("nan"); }),
             "command-line value:1:1: JSON has no NaN or infinity, got 'nan'");
@@ -449,7 +463,8 @@ TEST(Json, UnknownKeys) {
             "scene: unknown key 'time.u0' (known: T)");
   EXPECT_EQ(error_of([&] { require_known_keys(root["contact"], {"c_tau", "c_nu"}); }),
             "scene: unknown keys 'contact.law_normal', 'contact.law_tangential' (known: c_nu, c_tau)");
-  EXPECT_EQ(error_of([&] { unknown_keys(root["name"], {}); }), "scene: 'name' must be an object, got a string");
+  EXPECT_EQ(error_of([&] { unknown_keys(root["name"], {}); }),
+            "scene: 'name' must be an object, got the string \"paper2d\"");
 
   // The allowed keys may be computed at run time.
   const std::vector<std::string> allowed = {"c_nu", "c_tau"};

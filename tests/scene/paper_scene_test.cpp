@@ -126,7 +126,8 @@ TEST(PaperScene, InvalidScenesAreRefusedWithEveryProblemAndItsPath) {
 TEST(PaperScene, SetRefusesNumbersOutOfTheRangeOfADouble) {
   const std::string range = " is out of the range of a double (nonzero magnitudes from 4.9e-324 to 1.8e308)";
   EXPECT_EQ(testing::error_of([] { coarse({"contact.c_nu=1e400"}); }), "--set contact.c_nu:1:1: number 1e400" + range);
-  EXPECT_EQ(testing::error_of([] { coarse({"contact.c_nu=-1e400"}); }), "--set contact.c_nu:1:1: number -1e400" + range);
+  EXPECT_EQ(testing::error_of([] { coarse({"contact.c_nu=-1e400"}); }),
+            "--set contact.c_nu:1:1: number -1e400" + range);
   EXPECT_EQ(testing::error_of([] { coarse({"contact.c_nu=1e-400"}); }), "--set contact.c_nu: number 1e-400" + range);
 }
 
