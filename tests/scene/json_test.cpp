@@ -295,6 +295,9 @@ TEST(Json, DumpRoundTripsDoublesExactly) {
   EXPECT_EQ(Json(1e12).dump(), "1000000000000");
   EXPECT_EQ(Json(127205000000.0).dump(), "127205000000");
   EXPECT_EQ(Json(-48.0).dump(), "-48");
+  // Also when read from a file, where nlohmann holds 7800.0 as a double and 60 as an integer.
+  EXPECT_EQ(parse_json("[7800.0, 1e12, 60, -0.5e1, 1e22, 9007199254740993]", "s").dump(0),
+            "[7800,1000000000000,60,-5,1e+22,9007199254740992]");
 }
 
 TEST(Json, DumpLaysOutAndEscapes) {
