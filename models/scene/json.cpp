@@ -4,28 +4,23 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <system_error>
 
 #include "assembly/error.hpp"
 
 namespace pc {
+
+struct Json::Value {
+  nlohmann::ordered_json json;
+};
+
 namespace {
 
-const char* type_name(Json::Type type) {
-  switch (type) {
-    case Json::Type::null: return "null";
-    case Json::Type::boolean: return "a boolean";
-    case Json::Type::number: return "a number";
-    case Json::Type::string: return "a string";
-    case Json::Type::array: return "an array";
-    case Json::Type::object: return "an object";
-  }
-  return "?";
-}
+using nlohmann::ordered_json;
 
 // "'contact.c_nu'", or "the root" for the document itself.
 std::string where(const std::string& path) { return path.empty() ? std::string("the root") : "'" + path + "'"; }
@@ -41,11 +36,28 @@ std::string item_path(const std::string& parent, std::size_t index) {
 // Shortest text that reads back as the same double; integers below 2^53 (all exactly representable)
 // without exponent or decimals, as a reader of a scene expects "60" and "1000000000000".
 std::string format_number(double value) {
+  // nlohmann reads "-0" as the integer 0, which has no sign.
+  if (value == 0 && std::signbit(value)) return "-0.0";
   char buffer[64];
   const bool integral = std::trunc(value) == value && std::fabs(value) < 9007199254740992.0;
   const auto result = integral ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed)
                                : std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
+}
+
+// The type and, for a scalar, the value: "the string \"1e12\"", "the number -1", "an object".
+std::string describe(const ordered_json& value) {
+  if (value.is_null()) return "null";
+  if (value.is_boolean()) return std::string("the boolean ") + (value.get<bool>() ? "true" : "false");
+  if (value.is_number()) return "the number " + format_number(value.get<double>());
+  if (value.is_string()) return "the string " + value.dump();
+  return value.is_array() ? "an array" : "an object";
+}
+
+std::vector<std::string> keys_of(const ordered_json& object) {
+  std::vector<std::string> keys;
+  for (const auto& member : object.items()) keys.push_back(member.key());
+  return keys;
 }
 
 std::string join_sorted(std::vector<std::string> names) {
@@ -56,90 +68,39 @@ std::string join_sorted(std::vector<std::string> names) {
   return joined;
 }
 
-// Length of the valid UTF-8 sequence starting at text[pos], or 0 when it is not valid: no overlong forms,
-// no encoded surrogates, nothing above U+10FFFF.
-std::size_t utf8_sequence_length(std::string_view text, std::size_t pos) {
-  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
-  const unsigned char lead = byte(pos);
-  if (lead < 0x80) return 1;
-  std::size_t length = 0;
-  unsigned char min_second = 0x80, max_second = 0xBF;
-  if (lead >= 0xC2 && lead <= 0xDF) {
-    length = 2;
-  } else if (lead >= 0xE0 && lead <= 0xEF) {
-    length = 3;
-    if (lead == 0xE0) min_second = 0xA0;  // overlong below U+0800
-    if (lead == 0xED) max_second = 0x9F;  // surrogates U+D800..U+DFFF
-  } else if (lead >= 0xF0 && lead <= 0xF4) {
-    length = 4;
-    if (lead == 0xF0) min_second = 0x90;  // overlong below U+10000
-    if (lead == 0xF4) max_second = 0x8F;  // above U+10FFFF
-  } else {
-    return 0;
-  }
-  if (pos + length > text.size()) return 0;
-  if (byte(pos + 1) < min_second || byte(pos + 1) > max_second) return 0;
-  for (std::size_t i = 2; i < length; ++i)
-    if ((byte(pos + i) & 0xC0) != 0x80) return 0;
-  return length;
+std::string out_of_range(const std::string& number, const std::string& path) {
+  return "number " + number + (path.empty() ? "" : " at '" + path + "'") +
+         " is out of the range of a double (nonzero magnitudes from 4.9e-324 to 1.8e308)";
 }
 
-bool is_valid_utf8(std::string_view text) {
-  for (std::size_t pos = 0; pos < text.size();) {
-    const std::size_t length = utf8_sequence_length(text, pos);
-    if (length == 0) return false;
-    pos += length;
+// nlohmann prints the double 7800 as 7800.0 and 1e12 as 1000000000000.0; a scene reads better with the
+// numbers of format_number. Everything else, strings and their escapes included, nlohmann writes.
+void write(std::string& out, const ordered_json& value, int indent, int depth) {
+  const auto newline = [&](int level) {
+    if (indent <= 0) return;
+    out += '\n';
+    out.append(static_cast<std::size_t>(indent) * static_cast<std::size_t>(level), ' ');
+  };
+  if (value.is_number()) {
+    out += format_number(value.get<double>());
+    return;
   }
-  return true;
-}
-
-void append_utf8(std::string& out, unsigned code_point) {
-  if (code_point < 0x80) {
-    out += static_cast<char>(code_point);
-  } else if (code_point < 0x800) {
-    out += static_cast<char>(0xC0 | (code_point >> 6));
-    out += static_cast<char>(0x80 | (code_point & 0x3F));
-  } else if (code_point < 0x10000) {
-    out += static_cast<char>(0xE0 | (code_point >> 12));
-    out += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (code_point & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (code_point >> 18));
-    out += static_cast<char>(0x80 | ((code_point >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (code_point & 0x3F));
+  if (!value.is_structured() || value.empty()) {
+    out += value.dump();
+    return;
   }
-}
-
-void write_string(std::string& out, const std::string& text) {
-  static const char hex[] = "0123456789abcdef";
-  out += '"';
-  for (const char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\b': out += "\\b"; break;
-      case '\f': out += "\\f"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          out += "\\u00";
-          out += hex[(c >> 4) & 0xF];
-          out += hex[c & 0xF];
-        } else {
-          out += c;
-        }
-    }
+  const bool is_object = value.is_object();
+  out += is_object ? '{' : '[';
+  bool first = true;
+  for (const auto& member : value.items()) {
+    if (!first) out += ',';
+    first = false;
+    newline(depth + 1);
+    if (is_object) out += ordered_json(member.key()).dump() + (indent > 0 ? ": " : ":");
+    write(out, member.value(), indent, depth + 1);
   }
-  out += '"';
-}
-
-void write_newline(std::string& out, int indent, int depth) {
-  if (indent <= 0) return;
-  out += '\n';
-  out.append(static_cast<std::size_t>(indent) * static_cast<std::size_t>(depth), ' ');
+  newline(depth);
+  out += is_object ? '}' : ']';
 }
 
 // One step of a --set path: a key of an object or an index into an array.
@@ -186,88 +147,261 @@ std::vector<PathStep> split_path(const std::string& dotted_path) {
   return steps;
 }
 
+// Builds the document from nlohmann's SAX events, to refuse what its own builder accepts: a duplicate key
+// (it keeps the last value), a number that underflows to zero (1e-400) and nesting deep enough to
+// overflow the stack of the recursive code that walks a document. Turns nlohmann's errors into
+// "source:line:column: ..." messages.
+class StrictBuilder final : public nlohmann::json_sax<ordered_json> {
+ public:
+  StrictBuilder(const std::string& text, const std::string& source_name) : text_(text), source_name_(source_name) {}
+
+  ordered_json& root() { return root_; }
+
+  bool null() override { return add(nullptr); }
+  bool boolean(bool value) override { return add(value); }
+  bool number_integer(number_integer_t value) override { return add(value); }
+  bool number_unsigned(number_unsigned_t value) override { return add(value); }
+  bool number_float(number_float_t value, const string_t& text) override {
+    // nlohmann refuses an overflow (1e400) itself, but rounds an underflow to zero.
+    double exact = 0.0;
+    if (std::from_chars(text.data(), text.data() + text.size(), exact).ec != std::errc())
+      fail(source_name_, ": ", out_of_range(text, next_path()));
+    return add(value);
+  }
+  bool string(string_t& value) override { return add(std::move(value)); }
+  // Never called: JSON text has no binary values.
+  bool binary(binary_t&) override { return false; }
+
+  bool start_object(std::size_t) override { return open(ordered_json::object()); }
+  bool key(string_t& key) override {
+    const Container& object = open_.back();
+    if (object.value->contains(key)) fail(source_name_, ": duplicate key '", child_path(object.path, key), "'");
+    key_ = key;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(ordered_json::array()); }
+  bool end_array() override { return close(); }
+
+  // `bytes_read` counts the bytes read up to and including the one that failed.
+  bool parse_error(std::size_t bytes_read, const std::string& last_token,
+                   const ordered_json::exception& error) override {
+    const std::size_t failed = bytes_read > 0 ? bytes_read - 1 : 0;
+    // nlohmann's out_of_range 406 is a number beyond a double, and its last token is that number.
+    if (error.id == 406)
+      fail_at(bytes_read - std::min(bytes_read, last_token.size()), out_of_range(last_token, next_path()));
+    // nlohmann calls them invalid literals; whoever wrote one should hear that JSON has no such numbers.
+    const std::size_t start = word_start(failed);
+    const std::string word = text_.substr(start, word_end(failed) - start);
+    if (is_nan_or_infinity(word)) {
+      if (start > 0 && text_[start - 1] == '-') fail_at(start - 1, "JSON has no NaN or infinity, got '-" + word + "'");
+      fail_at(start, "JSON has no NaN or infinity, got '" + word + "'");
+    }
+    // "[json.exception.parse_error.101] parse error at line 1, column 3: syntax error ..." without the
+    // position, which nlohmann counts in bytes from 0 rather than in characters from 1.
+    const std::string what = error.what();
+    const std::size_t colon = what.find(": ");
+    fail_at(failed, colon == std::string::npos ? what : what.substr(colon + 2));
+  }
+
+ private:
+  struct Container {
+    ordered_json* value;
+    std::string path;
+  };
+
+  // Deep enough for any scene, shallow enough that hostile input cannot overflow the stack.
+  static constexpr std::size_t max_depth = 256;
+
+  // Path of the value that comes next.
+  std::string next_path() const {
+    if (open_.empty()) return "";
+    const Container& parent = open_.back();
+    return parent.value->is_array() ? item_path(parent.path, parent.value->size()) : child_path(parent.path, key_);
+  }
+
+  ordered_json* place(ordered_json value) {
+    if (open_.empty()) {
+      root_ = std::move(value);
+      return &root_;
+    }
+    ordered_json& parent = *open_.back().value;
+    if (parent.is_object()) return &(parent[key_] = std::move(value));
+    parent.push_back(std::move(value));
+    return &parent.back();
+  }
+
+  bool add(ordered_json value) {
+    place(std::move(value));
+    return true;
+  }
+
+  bool open(ordered_json container) {
+    if (open_.size() == max_depth) fail(source_name_, ": nesting deeper than ", max_depth, " levels");
+    std::string path = next_path();
+    open_.push_back({place(std::move(container)), std::move(path)});
+    return true;
+  }
+
+  bool close() {
+    open_.pop_back();
+    return true;
+  }
+
+  bool is_letter(std::size_t i) const {
+    const char c = i < text_.size() ? text_[i] : '\0';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+  }
+  std::size_t word_start(std::size_t i) const {
+    while (i > 0 && is_letter(i - 1)) --i;
+    return i;
+  }
+  std::size_t word_end(std::size_t i) const {
+    while (is_letter(i)) ++i;
+    return i;
+  }
+  static bool is_nan_or_infinity(std::string word) {
+    std::transform(word.begin(), word.end(), word.begin(), [](char c) { return static_cast<char>(c | 0x20); });
+    return word == "nan" || word == "inf" || word == "infinity";
+  }
+
+  [[noreturn]] void fail_at(std::size_t pos, const std::string& what) const {
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < pos && i < text_.size(); ++i) {
+      if (text_[i] == '\n') {
+        ++line;
+        column = 1;
+      } else if ((static_cast<unsigned char>(text_[i]) & 0xC0) != 0x80) {
+        ++column;  // columns count characters, not the continuation bytes of UTF-8
+      }
+    }
+    fail(source_name_, ":", line, ":", column, ": ", what);
+  }
+
+  const std::string& text_;
+  const std::string& source_name_;
+  ordered_json root_;
+  std::vector<Container> open_;  // the arrays and objects being read, innermost last
+  std::string key_;              // the key of the next value of the innermost object
+};
+
+// 1e400, 1e-400, nan and inf read as numbers: whoever wrote one meant a number, not a string.
+bool reads_as_number(const std::string& text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return error != std::errc::invalid_argument && end == text.data() + text.size();
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------------
 // Construction
 
-Json::Json(bool value) : type_(Type::boolean), bool_(value) {}
+Json::Json() : value_(std::make_unique<Value>()) {}
 
-Json::Json(double value) : type_(Type::number), number_(value) {
+Json::Json(bool value) : Json() { value_->json = value; }
+
+Json::Json(double value) : Json() {
   require(std::isfinite(value), "scene: JSON has no NaN or infinity, cannot store ", value);
+  value_->json = value;
 }
 
-Json::Json(std::string value) : type_(Type::string), string_(std::move(value)) {
-  require(is_valid_utf8(string_), "scene: a string is not valid UTF-8");
+Json::Json(std::string value) : Json() {
+  value_->json = std::move(value);
+  // nlohmann checks UTF-8 when it writes a string, not when it stores one.
+  try {
+    static_cast<void>(value_->json.dump());
+  } catch (const ordered_json::type_error&) {
+    fail("scene: a string is not valid UTF-8");
+  }
 }
+
+Json::Json(Value value, std::string path) : value_(std::make_unique<Value>(std::move(value))), path_(std::move(path)) {}
+
+Json::Json(const Json& other) : value_(std::make_unique<Value>(*other.value_)), path_(other.path_) {}
+Json::Json(Json&& other) noexcept = default;
+Json& Json::operator=(const Json& other) {
+  value_ = std::make_unique<Value>(*other.value_);
+  path_ = other.path_;
+  return *this;
+}
+Json& Json::operator=(Json&& other) noexcept = default;
+Json::~Json() = default;
 
 Json Json::array(std::vector<Json> items) {
-  Json result;
-  result.type_ = Type::array;
-  result.items_ = std::move(items);
-  result.move_to("");
+  Json result(Value{ordered_json::array()}, "");
+  for (Json& item : items) result.value_->json.push_back(std::move(item.value_->json));
   return result;
 }
 
 Json Json::object(std::vector<Member> members) {
-  Json result;
-  result.type_ = Type::object;
+  Json result(Value{ordered_json::object()}, "");
   for (auto& [key, value] : members) {
-    require(!result.find(key), "scene: duplicate key '", key, "'");
+    require(!result.contains(key), "scene: duplicate key '", key, "'");
     result.set(key, std::move(value));
   }
   return result;
 }
 
-void Json::move_to(const std::string& path) {
-  path_ = path;
-  for (std::size_t i = 0; i < items_.size(); ++i) items_[i].move_to(item_path(path_, i));
-  for (auto& [key, value] : members_) value.move_to(child_path(path_, key));
-}
-
 // ---------------------------------------------------------------------------------------------------------
 // Typed access
 
+bool Json::is_null() const { return value_->json.is_null(); }
+bool Json::is_bool() const { return value_->json.is_boolean(); }
+bool Json::is_number() const { return value_->json.is_number(); }
+bool Json::is_string() const { return value_->json.is_string(); }
+bool Json::is_array() const { return value_->json.is_array(); }
+bool Json::is_object() const { return value_->json.is_object(); }
+
 void Json::fail_type(const char* expected) const {
-  fail("scene: ", where(path_), " must be ", expected, ", got ", type_name(type_));
+  fail("scene: ", where(path_), " must be ", expected, ", got ", describe(value_->json));
 }
 
-void Json::expect(Type expected) const {
-  if (type_ != expected) fail_type(type_name(expected));
+void Json::expect_object() const {
+  if (!is_object()) fail_type("an object");
+}
+
+void Json::expect_array() const {
+  if (!is_array()) fail_type("an array");
 }
 
 bool Json::as_bool() const {
-  expect(Type::boolean);
-  return bool_;
+  if (!is_bool()) fail_type("a boolean");
+  return value_->json.get<bool>();
 }
 
 double Json::as_number() const {
-  expect(Type::number);
-  return number_;
+  if (!is_number()) fail_type("a number");
+  return value_->json.get<double>();
 }
 
 int Json::as_int() const {
-  expect(Type::number);
-  require(std::trunc(number_) == number_, "scene: ", where(path_), " must be an integer, got ",
-          format_number(number_));
-  require(number_ >= INT_MIN && number_ <= INT_MAX, "scene: ", where(path_), " must be an integer in [", INT_MIN,
-          ", ", INT_MAX, "], got ", format_number(number_));
-  return static_cast<int>(number_);
+  const double number = as_number();
+  require(std::trunc(number) == number, "scene: ", where(path_), " must be an integer, got ", format_number(number));
+  require(number >= INT_MIN && number <= INT_MAX, "scene: ", where(path_), " must be an integer in [", INT_MIN, ", ",
+          INT_MAX, "], got ", format_number(number));
+  return static_cast<int>(number);
 }
 
-const std::string& Json::as_string() const {
-  expect(Type::string);
-  return string_;
+std::string Json::as_string() const {
+  if (!is_string()) fail_type("a string");
+  return value_->json.get<std::string>();
 }
 
-const std::vector<Json>& Json::as_array() const {
-  expect(Type::array);
-  return items_;
+std::vector<Json> Json::as_array() const {
+  expect_array();
+  std::vector<Json> items;
+  for (std::size_t i = 0; i < value_->json.size(); ++i)
+    items.push_back(Json(Value{value_->json[i]}, item_path(path_, i)));
+  return items;
 }
 
-const std::vector<Json::Member>& Json::members() const {
-  expect(Type::object);
-  return members_;
+std::vector<Json::Member> Json::members() const {
+  expect_object();
+  std::vector<Member> members;
+  for (const auto& member : value_->json.items())
+    members.emplace_back(member.key(), Json(Value{member.value()}, child_path(path_, member.key())));
+  return members;
 }
 
 double Json::as_positive() const {
@@ -296,28 +430,27 @@ int Json::as_int_at_least(int min) const {
 }
 
 std::vector<double> Json::as_vector() const {
-  if (type_ != Type::array) fail_type("an array of numbers");
+  if (!is_array()) fail_type("an array of numbers");
   std::vector<double> values;
-  values.reserve(items_.size());
-  for (const Json& item : items_) values.push_back(item.as_number());
+  for (const Json& item : as_array()) values.push_back(item.as_number());
   return values;
 }
 
 std::vector<double> Json::as_vector(std::size_t expected_size) const {
-  if (type_ != Type::array) fail_type("an array of numbers");
-  require(items_.size() == expected_size, "scene: ", where(path_), " must have ", expected_size,
-          " entries, got ", items_.size());
+  if (!is_array()) fail_type("an array of numbers");
+  require(size() == expected_size, "scene: ", where(path_), " must have ", expected_size, " entries, got ", size());
   return as_vector();
 }
 
 Eigen::MatrixXd Json::as_matrix() const {
-  if (type_ != Type::array) fail_type("a matrix (an array of rows)");
-  require(!items_.empty(), "scene: ", where(path_), " must be a matrix, got an empty array");
-  const std::size_t cols = items_[0].as_vector().size();
+  if (!is_array()) fail_type("a matrix (an array of rows)");
+  const std::vector<Json> rows = as_array();
+  require(!rows.empty(), "scene: ", where(path_), " must be a matrix, got an empty array");
+  const std::size_t cols = rows[0].as_vector().size();
   require(cols > 0, "scene: ", where(path_), " must be a matrix, got an empty row 0");
-  Eigen::MatrixXd matrix(static_cast<Eigen::Index>(items_.size()), static_cast<Eigen::Index>(cols));
-  for (std::size_t r = 0; r < items_.size(); ++r) {
-    const std::vector<double> row = items_[r].as_vector();
+  Eigen::MatrixXd matrix(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols));
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::vector<double> row = rows[r].as_vector();
     require(row.size() == cols, "scene: ", where(path_), " must be a matrix, but row ", r, " has ", row.size(),
             " entries and row 0 has ", cols);
     for (std::size_t c = 0; c < cols; ++c)
@@ -328,436 +461,107 @@ Eigen::MatrixXd Json::as_matrix() const {
 
 Eigen::MatrixXd Json::as_matrix(Eigen::Index expected_rows, Eigen::Index expected_cols) const {
   Eigen::MatrixXd matrix = as_matrix();
-  require(matrix.rows() == expected_rows && matrix.cols() == expected_cols, "scene: ", where(path_),
-          " must be a ", expected_rows, "x", expected_cols, " matrix, got ", matrix.rows(), "x", matrix.cols());
+  require(matrix.rows() == expected_rows && matrix.cols() == expected_cols, "scene: ", where(path_), " must be a ",
+          expected_rows, "x", expected_cols, " matrix, got ", matrix.rows(), "x", matrix.cols());
   return matrix;
 }
 
-const Json* Json::find(std::string_view key) const {
-  expect(Type::object);
-  for (const auto& [name, value] : members_)
-    if (name == key) return &value;
-  return nullptr;
+std::optional<Json> Json::find(std::string_view key) const {
+  expect_object();
+  const auto member = value_->json.find(std::string(key));
+  if (member == value_->json.end()) return std::nullopt;
+  return Json(Value{*member}, child_path(path_, key));
 }
 
-Json* Json::find_mutable(std::string_view key) { return const_cast<Json*>(std::as_const(*this).find(key)); }
+bool Json::contains(std::string_view key) const {
+  expect_object();
+  return value_->json.contains(std::string(key));
+}
 
-const Json& Json::at(std::string_view key) const {
-  const Json* value = find(key);
+Json Json::at(std::string_view key) const {
+  std::optional<Json> value = find(key);
   if (!value) fail("scene: missing key '", child_path(path_, key), "'");
-  return *value;
+  return std::move(*value);
 }
 
 std::vector<std::string> Json::keys() const {
-  std::vector<std::string> names;
-  for (const auto& member : members()) names.push_back(member.first);
-  return names;
+  expect_object();
+  return keys_of(value_->json);
 }
 
-const Json& Json::at(std::size_t index) const {
-  expect(Type::array);
-  require(index < items_.size(), "scene: ", where(item_path(path_, index)), " is out of range: ", where(path_),
-          " has ", items_.size(), " entries");
-  return items_[index];
+Json Json::at(std::size_t index) const {
+  expect_array();
+  require(index < size(), "scene: ", where(item_path(path_, index)), " is out of range: ", where(path_), " has ",
+          size(), " entries");
+  return Json(Value{value_->json[index]}, item_path(path_, index));
 }
 
 std::size_t Json::size() const {
-  if (type_ == Type::array) return items_.size();
-  if (type_ == Type::object) return members_.size();
-  fail_type("an array or an object");
+  if (!is_array() && !is_object()) fail_type("an array or an object");
+  return value_->json.size();
 }
 
 // ---------------------------------------------------------------------------------------------------------
 // Changes
 
 void Json::set(const std::string& key, Json value) {
-  expect(Type::object);
-  value.move_to(child_path(path_, key));
-  if (Json* existing = find_mutable(key)) {
-    *existing = std::move(value);
-  } else {
-    members_.emplace_back(key, std::move(value));
-  }
+  expect_object();
+  value_->json[key] = std::move(value.value_->json);
 }
 
 void Json::push_back(Json value) {
-  expect(Type::array);
-  value.move_to(item_path(path_, items_.size()));
-  items_.push_back(std::move(value));
+  expect_array();
+  value_->json.push_back(std::move(value.value_->json));
 }
 
 void Json::set_path(const std::string& dotted_path, Json value, NewKeys new_keys) {
   const std::vector<PathStep> steps = split_path(dotted_path);
-  Json* node = this;
+  ordered_json* node = &value_->json;
+  std::string node_path = path_;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const PathStep& step = steps[i];
-    const bool last = i + 1 == steps.size();
     if (step.is_index) {
-      require(node->is_array(), "scene: cannot set '", dotted_path, "': ", where(node->path_), " is ",
-              type_name(node->type_), ", not an array");
-      require(step.index < node->items_.size(), "scene: cannot set '", dotted_path, "': ", where(node->path_),
-              " has ", node->items_.size(), " entries");
-      Json& item = node->items_[step.index];
-      if (last) {
-        value.move_to(item.path_);
-        item = std::move(value);
-        return;
-      }
-      node = &item;
+      require(node->is_array(), "scene: cannot set '", dotted_path, "': ", where(node_path), " is ", describe(*node),
+              ", not an array");
+      require(step.index < node->size(), "scene: cannot set '", dotted_path, "': ", where(node_path), " has ",
+              node->size(), " entries");
+      node = &(*node)[step.index];
+      node_path = item_path(node_path, step.index);
     } else {
-      require(node->is_object(), "scene: cannot set '", dotted_path, "': ", where(node->path_), " is ",
-              type_name(node->type_), ", not an object");
-      Json* member = node->find_mutable(step.key);
-      if (last && (member || new_keys == NewKeys::allow)) {
-        node->set(step.key, std::move(value));
-        return;
-      }
-      if (!member)
-        fail("scene: unknown key '", child_path(node->path_, step.key), "' (known: ", join_sorted(node->keys()), ")");
-      node = member;
+      require(node->is_object(), "scene: cannot set '", dotted_path, "': ", where(node_path), " is ", describe(*node),
+              ", not an object");
+      const bool may_add = i + 1 == steps.size() && new_keys == NewKeys::allow;
+      if (!node->contains(step.key) && !may_add)
+        fail("scene: unknown key '", child_path(node_path, step.key), "' (known: ", join_sorted(keys_of(*node)), ")");
+      node = &(*node)[step.key];
+      node_path = child_path(node_path, step.key);
     }
   }
+  *node = std::move(value.value_->json);
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Output
+// Output and comparison
 
 std::string Json::dump(int indent) const {
   std::string out;
-  write(out, indent, 0);
+  write(out, value_->json, indent, 0);
   return out;
 }
 
-void Json::write(std::string& out, int indent, int depth) const {
-  switch (type_) {
-    case Type::null: out += "null"; break;
-    case Type::boolean: out += bool_ ? "true" : "false"; break;
-    case Type::number: out += format_number(number_); break;
-    case Type::string: write_string(out, string_); break;
-    case Type::array:
-      if (items_.empty()) {
-        out += "[]";
-        break;
-      }
-      out += '[';
-      for (std::size_t i = 0; i < items_.size(); ++i) {
-        if (i) out += ',';
-        write_newline(out, indent, depth + 1);
-        items_[i].write(out, indent, depth + 1);
-      }
-      write_newline(out, indent, depth);
-      out += ']';
-      break;
-    case Type::object:
-      if (members_.empty()) {
-        out += "{}";
-        break;
-      }
-      out += '{';
-      for (std::size_t i = 0; i < members_.size(); ++i) {
-        if (i) out += ',';
-        write_newline(out, indent, depth + 1);
-        write_string(out, members_[i].first);
-        out += indent > 0 ? ": " : ":";
-        members_[i].second.write(out, indent, depth + 1);
-      }
-      write_newline(out, indent, depth);
-      out += '}';
-      break;
-  }
-}
-
 bool operator==(const Json& a, const Json& b) {
-  if (a.type_ != b.type_) return false;
-  switch (a.type_) {
-    case Json::Type::null: return true;
-    case Json::Type::boolean: return a.bool_ == b.bool_;
-    case Json::Type::number: return a.number_ == b.number_;
-    case Json::Type::string: return a.string_ == b.string_;
-    case Json::Type::array: return a.items_ == b.items_;
-    case Json::Type::object:
-      if (a.members_.size() != b.members_.size()) return false;
-      for (const auto& [key, value] : a.members_) {
-        const Json* other = b.find(key);
-        if (!other || !(*other == value)) return false;
-      }
-      return true;
-  }
-  return false;
+  // nlohmann::json keeps keys sorted, so its == ignores their order.
+  return nlohmann::json(a.value_->json) == nlohmann::json(b.value_->json);
 }
 
 // ---------------------------------------------------------------------------------------------------------
-// Parsing
-
-// Recursive descent over the whole text; each value is built with its final path.
-class JsonParser {
- public:
-  JsonParser(std::string_view text, const std::string& source_name) : text_(text), source_name_(source_name) {}
-
-  Json parse_document() {
-    // RFC 8259 lets a parser ignore a byte order mark, which some editors write.
-    if (text_.starts_with("\xEF\xBB\xBF")) pos_ = 3;
-    skip_whitespace();
-    Json root = parse_value("", 0);
-    skip_whitespace();
-    if (pos_ < text_.size()) fail_here("expected the end of the input after the value, got " + describe_here());
-    return root;
-  }
-
- private:
-  // Deep enough for any scene, shallow enough that hostile input cannot overflow the stack.
-  static constexpr int max_depth = 256;
-
-  [[noreturn]] void fail_at(std::size_t pos, const std::string& what) const {
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i < pos && i < text_.size(); ++i) {
-      if (text_[i] == '\n') {
-        ++line;
-        column = 1;
-      } else if ((static_cast<unsigned char>(text_[i]) & 0xC0) != 0x80) {
-        ++column;  // columns count characters, not the continuation bytes of UTF-8
-      }
-    }
-    fail(source_name_, ":", line, ":", column, ": ", what);
-  }
-
-  [[noreturn]] void fail_here(const std::string& what) const { fail_at(pos_, what); }
-
-  std::string describe_here() const {
-    if (pos_ >= text_.size()) return "the end of the input";
-    const unsigned char c = static_cast<unsigned char>(text_[pos_]);
-    if (c >= 0x20 && c < 0x7F) return std::string("'") + static_cast<char>(c) + "'";
-    char code[8];
-    std::snprintf(code, sizeof code, "0x%02X", c);
-    return std::string("byte ") + code;
-  }
-
-  bool at_end() const { return pos_ >= text_.size(); }
-  char peek() const { return at_end() ? '\0' : text_[pos_]; }
-  static bool is_digit(char c) { return c >= '0' && c <= '9'; }
-  static bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-
-  void skip_whitespace() {
-    while (!at_end() && (peek() == ' ' || peek() == '\t' || peek() == '\n' || peek() == '\r')) ++pos_;
-  }
-
-  Json parse_value(const std::string& path, int depth) {
-    if (depth > max_depth) fail_here("nesting deeper than " + std::to_string(max_depth) + " levels");
-    Json value;
-    const char c = peek();
-    if (c == '{') {
-      value = parse_object(path, depth);
-    } else if (c == '[') {
-      value = parse_array(path, depth);
-    } else if (c == '"') {
-      value = Json(parse_string());
-    } else if (c == '-' || is_digit(c)) {
-      value = Json(parse_number());
-    } else if (is_letter(c)) {
-      value = parse_word();
-    } else if (c == '/') {
-      fail_here("comments are not allowed in JSON");
-    } else if (c == '\'') {
-      fail_here("strings must be in double quotes");
-    } else {
-      fail_here("expected a value, got " + describe_here());
-    }
-    value.path_ = path;
-    return value;
-  }
-
-  std::string_view read_word() {
-    const std::size_t start = pos_;
-    while (!at_end() && (is_letter(peek()) || is_digit(peek()) || peek() == '_')) ++pos_;
-    return text_.substr(start, pos_ - start);
-  }
-
-  static bool is_nan_or_infinity(std::string_view word) {
-    std::string lower(word);
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](char c) { return static_cast<char>(c | 0x20); });
-    return lower == "nan" || lower == "inf" || lower == "infinity";
-  }
-
-  Json parse_word() {
-    const std::size_t start = pos_;
-    const std::string_view word = read_word();
-    if (word == "true") return Json(true);
-    if (word == "false") return Json(false);
-    if (word == "null") return Json();
-    if (is_nan_or_infinity(word)) fail_at(start, "JSON has no NaN or infinity, got '" + std::string(word) + "'");
-    fail_at(start, "expected a value, got '" + std::string(word) + "' (strings must be in double quotes)");
-  }
-
-  double parse_number() {
-    const std::size_t start = pos_;
-    if (peek() == '-') ++pos_;
-    if (is_letter(peek())) {
-      const std::string_view word = read_word();
-      if (is_nan_or_infinity(word)) fail_at(start, "JSON has no NaN or infinity, got '-" + std::string(word) + "'");
-      pos_ = start + 1;
-    }
-    if (!is_digit(peek())) fail_here("expected a digit after '-', got " + describe_here());
-    if (peek() == '0') {
-      ++pos_;
-      if (is_digit(peek())) fail_here("numbers may not have leading zeros");
-    } else {
-      skip_digits();
-    }
-    if (peek() == '.') {
-      ++pos_;
-      if (!is_digit(peek())) fail_here("expected a digit after the decimal point, got " + describe_here());
-      skip_digits();
-    }
-    if (peek() == 'e' || peek() == 'E') {
-      ++pos_;
-      if (peek() == '+' || peek() == '-') ++pos_;
-      if (!is_digit(peek())) fail_here("expected a digit in the exponent, got " + describe_here());
-      skip_digits();
-    }
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(text_.data() + start, text_.data() + pos_, value);
-    if (error != std::errc() || end != text_.data() + pos_)
-      fail_at(start, "number " + std::string(text_.substr(start, pos_ - start)) + " is out of the range of a double");
-    return value;
-  }
-
-  void skip_digits() {
-    while (is_digit(peek())) ++pos_;
-  }
-
-  unsigned parse_hex4() {
-    unsigned code = 0;
-    for (int i = 0; i < 4; ++i, ++pos_) {
-      const char c = peek();
-      unsigned digit;
-      if (is_digit(c)) {
-        digit = static_cast<unsigned>(c - '0');
-      } else if (c >= 'a' && c <= 'f') {
-        digit = static_cast<unsigned>(c - 'a' + 10);
-      } else if (c >= 'A' && c <= 'F') {
-        digit = static_cast<unsigned>(c - 'A' + 10);
-      } else {
-        fail_here("expected 4 hexadecimal digits after \\u, got " + describe_here());
-      }
-      code = code * 16 + digit;
-    }
-    return code;
-  }
-
-  // The escape starts at pos_, just after the backslash.
-  void parse_escape(std::string& out) {
-    const std::size_t backslash = pos_ - 1;
-    const char c = peek();
-    ++pos_;
-    switch (c) {
-      case '"': out += '"'; return;
-      case '\\': out += '\\'; return;
-      case '/': out += '/'; return;
-      case 'b': out += '\b'; return;
-      case 'f': out += '\f'; return;
-      case 'n': out += '\n'; return;
-      case 'r': out += '\r'; return;
-      case 't': out += '\t'; return;
-      case 'u': break;
-      default:
-        fail_at(backslash, "invalid escape in a string (valid: \\\" \\\\ \\/ \\b \\f \\n \\r \\t \\uXXXX)");
-    }
-    unsigned code = parse_hex4();
-    if (code >= 0xDC00 && code <= 0xDFFF) fail_at(backslash, "unpaired low surrogate in a \\u escape");
-    if (code >= 0xD800 && code <= 0xDBFF) {
-      // A character above U+FFFF is written as a surrogate pair: \uD83D\uDE00.
-      if (!text_.substr(pos_).starts_with("\\u")) fail_at(backslash, "high surrogate not followed by a low surrogate");
-      pos_ += 2;
-      const unsigned low = parse_hex4();
-      if (low < 0xDC00 || low > 0xDFFF) fail_at(backslash, "high surrogate not followed by a low surrogate");
-      code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
-    }
-    append_utf8(out, code);
-  }
-
-  std::string parse_string() {
-    const std::size_t start = pos_;
-    ++pos_;  // opening quote
-    std::string out;
-    while (true) {
-      if (at_end()) fail_at(start, "unterminated string");
-      const unsigned char c = static_cast<unsigned char>(peek());
-      if (c == '"') break;
-      if (c == '\\') {
-        ++pos_;
-        if (at_end()) fail_at(start, "unterminated string");
-        parse_escape(out);
-      } else if (c < 0x20) {
-        fail_here("control character in a string (write it as an escape such as \\n or \\u001f)");
-      } else {
-        const std::size_t length = utf8_sequence_length(text_, pos_);
-        if (length == 0) fail_here("invalid UTF-8 in a string");
-        out.append(text_.substr(pos_, length));
-        pos_ += length;
-      }
-    }
-    ++pos_;  // closing quote
-    return out;
-  }
-
-  Json parse_array(const std::string& path, int depth) {
-    Json array = Json::array();
-    ++pos_;  // '['
-    skip_whitespace();
-    if (peek() == ']') {
-      ++pos_;
-      return array;
-    }
-    while (true) {
-      skip_whitespace();
-      if (peek() == ']') fail_here("trailing comma before ']'");
-      array.items_.push_back(parse_value(item_path(path, array.items_.size()), depth + 1));
-      skip_whitespace();
-      if (peek() == ']') break;
-      if (peek() != ',') fail_here("expected ',' or ']' after an entry of " + where(path) + ", got " + describe_here());
-      ++pos_;
-    }
-    ++pos_;  // ']'
-    return array;
-  }
-
-  Json parse_object(const std::string& path, int depth) {
-    Json object = Json::object();
-    ++pos_;  // '{'
-    skip_whitespace();
-    if (peek() == '}') {
-      ++pos_;
-      return object;
-    }
-    while (true) {
-      skip_whitespace();
-      if (peek() == '}') fail_here("trailing comma before '}'");
-      if (peek() != '"') fail_here("expected a key in double quotes, got " + describe_here());
-      const std::size_t key_start = pos_;
-      std::string key = parse_string();
-      if (object.find(key)) fail_at(key_start, "duplicate key '" + child_path(path, key) + "'");
-      skip_whitespace();
-      if (peek() != ':') fail_here("expected ':' after the key \"" + key + "\", got " + describe_here());
-      ++pos_;
-      skip_whitespace();
-      Json value = parse_value(child_path(path, key), depth + 1);
-      object.members_.emplace_back(std::move(key), std::move(value));
-      skip_whitespace();
-      if (peek() == '}') break;
-      if (peek() != ',') fail_here("expected ',' or '}' after a member of " + where(path) + ", got " + describe_here());
-      ++pos_;
-    }
-    ++pos_;  // '}'
-    return object;
-  }
-
-  std::string_view text_;
-  const std::string& source_name_;
-  std::size_t pos_ = 0;
-};
+// Reading
 
 Json parse_json(const std::string& text, const std::string& source_name) {
-  return JsonParser(text, source_name).parse_document();
+  StrictBuilder builder(text, source_name);
+  // Every error throws from the builder, so sax_parse cannot return false.
+  static_cast<void>(ordered_json::sax_parse(text, &builder));
+  return Json(Json::Value{std::move(builder.root())}, "");
 }
 
 Json read_json_file(const std::string& path) {
@@ -770,35 +574,38 @@ Json read_json_file(const std::string& path) {
   return parse_json(content.str(), path);
 }
 
-Json parse_json_value_from_cli(const std::string& text) {
+Json parse_json_value_from_cli(const std::string& text, const std::string& source_name) {
   const bool looks_like_json = !text.empty() && (text[0] == '[' || text[0] == '{' || text[0] == '"');
-  if (looks_like_json) return parse_json(text, "command-line value");
+  if (looks_like_json || reads_as_number(text)) return parse_json(text, source_name);
   try {
-    return parse_json(text, "command-line value");
+    return parse_json(text, source_name);
   } catch (const Error&) {
     return Json(text);
   }
 }
 
-std::vector<std::string> unknown_keys(const Json& object, std::initializer_list<std::string_view> allowed) {
+std::vector<std::string> unknown_keys(const Json& object, const std::vector<std::string>& allowed) {
   std::vector<std::string> unknown;
-  for (const auto& [key, value] : object.members())
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) unknown.push_back(value.path());
+  for (const std::string& key : object.keys())
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      unknown.push_back(child_path(object.path(), key));
   return unknown;
 }
 
-void require_known_keys(const Json& object, std::initializer_list<std::string_view> allowed) {
-  require_known_keys(object, std::vector<std::string>(allowed.begin(), allowed.end()));
+std::vector<std::string> unknown_keys(const Json& object, std::initializer_list<std::string_view> allowed) {
+  return unknown_keys(object, std::vector<std::string>(allowed.begin(), allowed.end()));
 }
 
 void require_known_keys(const Json& object, const std::vector<std::string>& allowed) {
-  std::vector<std::string> unknown;
-  for (const auto& [key, value] : object.members())
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) unknown.push_back(value.path());
+  const std::vector<std::string> unknown = unknown_keys(object, allowed);
   if (unknown.empty()) return;
   std::string listed;
   for (const std::string& path : unknown) listed += (listed.empty() ? "'" : ", '") + path + "'";
   fail("scene: unknown key", unknown.size() > 1 ? "s " : " ", listed, " (known: ", join_sorted(allowed), ")");
+}
+
+void require_known_keys(const Json& object, std::initializer_list<std::string_view> allowed) {
+  require_known_keys(object, std::vector<std::string>(allowed.begin(), allowed.end()));
 }
 
 }  // namespace pc

@@ -1,14 +1,18 @@
 #pragma once
-// A small, strict JSON value for scene files (RFC 8259, no extensions). Every value remembers its path
-// from the document root ("contact.c_nu", "material.elasticity_B[1][2]"), so that a typed accessor that
-// finds the wrong type, a missing key or an out-of-range number throws a pc::Error that names the field:
-//   scene: 'contact.c_nu' must be a number, got a string
+// A strict JSON value for scene files (RFC 8259, no extensions), read and held by nlohmann::ordered_json.
+// Every value remembers its path from the document root ("contact.c_nu", "material.elasticity_B[1][2]"),
+// so that a typed accessor that finds the wrong type, a missing key or an out-of-range number throws a
+// pc::Error that names the field:
+//   scene: 'contact.c_nu' must be a number, got the string "1e12"
 // Objects keep the order of their keys, so that a scene read and written back diffs only where it changed.
 // Numbers are finite doubles: JSON has no NaN or infinity, and a Json never holds one.
+// Children are returned by value (a copy of the subtree with its path): scene documents are small.
 #include <Eigen/Core>
 #include <concepts>
 #include <cstddef>
 #include <initializer_list>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -16,17 +20,14 @@
 
 namespace pc {
 
-class JsonParser;
-
 class Json {
  public:
-  enum class Type { null, boolean, number, string, array, object };
   // Whether set_path may add a key that the object does not have yet.
   enum class NewKeys { forbid, allow };
   using Member = std::pair<std::string, Json>;
 
-  Json() = default;
-  Json(std::nullptr_t) {}
+  Json();
+  Json(std::nullptr_t) : Json() {}
   Json(bool value);
   // Throws when the value is NaN or infinite.
   Json(double value);
@@ -38,29 +39,36 @@ class Json {
   // Without it a string literal would convert to bool.
   Json(const char* value) : Json(std::string(value)) {}
 
+  Json(const Json& other);
+  // A moved-from Json may only be assigned to or destroyed.
+  Json(Json&& other) noexcept;
+  Json& operator=(const Json& other);
+  Json& operator=(Json&& other) noexcept;
+  ~Json();
+
   static Json array(std::vector<Json> items = {});
   // Keys in the given order; throws on a duplicate key.
   static Json object(std::vector<Member> members = {});
 
-  Type type() const { return type_; }
-  bool is_null() const { return type_ == Type::null; }
-  bool is_bool() const { return type_ == Type::boolean; }
-  bool is_number() const { return type_ == Type::number; }
-  bool is_string() const { return type_ == Type::string; }
-  bool is_array() const { return type_ == Type::array; }
-  bool is_object() const { return type_ == Type::object; }
+  bool is_null() const;
+  bool is_bool() const;
+  bool is_number() const;
+  bool is_string() const;
+  bool is_array() const;
+  bool is_object() const;
 
   // Dotted path from the document root; empty for the root itself.
   const std::string& path() const { return path_; }
 
-  // Typed accessors: each throws a pc::Error naming the path, the expected and the actual type.
+  // Typed accessors: each throws a pc::Error naming the path, the expected and the actual type, and the
+  // value when it is a scalar.
   bool as_bool() const;
   double as_number() const;
   // An integral number within the range of int.
   int as_int() const;
-  const std::string& as_string() const;
-  const std::vector<Json>& as_array() const;
-  const std::vector<Member>& members() const;
+  std::string as_string() const;
+  std::vector<Json> as_array() const;
+  std::vector<Member> members() const;
 
   // Range-checked numbers: the error names the bound, e.g. "scene: 'time.T' must be > 0, got -1".
   double as_positive() const;
@@ -75,24 +83,22 @@ class Json {
   Eigen::MatrixXd as_matrix() const;
   Eigen::MatrixXd as_matrix(Eigen::Index expected_rows, Eigen::Index expected_cols) const;
 
-  // Object access. at() throws "scene: missing key 'contact.c_nu'"; find() returns null for a missing key.
-  // Both throw when this is not an object.
-  const Json& at(std::string_view key) const;
-  const Json* find(std::string_view key) const;
-  bool contains(std::string_view key) const { return find(key) != nullptr; }
-  const Json& operator[](std::string_view key) const { return at(key); }
+  // Object access. at() throws "scene: missing key 'contact.c_nu'"; find() returns nothing for a missing
+  // key. Both throw when this is not an object.
+  Json at(std::string_view key) const;
+  std::optional<Json> find(std::string_view key) const;
+  bool contains(std::string_view key) const;
+  Json operator[](std::string_view key) const { return at(key); }
   // Keys in document order.
   std::vector<std::string> keys() const;
 
   // Array access; throws when this is not an array or the index is out of range.
-  const Json& at(std::size_t index) const;
-  const Json& operator[](std::size_t index) const { return at(index); }
+  Json at(std::size_t index) const;
+  Json operator[](std::size_t index) const { return at(index); }
 
   // Number of entries of an array or members of an object.
   std::size_t size() const;
 
-  // Children are reachable only as const, so that their paths stay right: these are the ways to change a
-  // tree, and they give the new value the path of the place it goes to.
   // Replaces the value of an existing key in place, or appends a new key.
   void set(const std::string& key, Json value);
   void push_back(Json value);
@@ -108,41 +114,39 @@ class Json {
   // Structural equality; paths and the order of object keys do not matter.
   friend bool operator==(const Json& a, const Json& b);
 
+  friend Json parse_json(const std::string& text, const std::string& source_name);
+
  private:
-  friend class JsonParser;
+  // The nlohmann value, defined in json.cpp so that this header does not pull nlohmann into every user.
+  struct Value;
+  Json(Value value, std::string path);
 
   [[noreturn]] void fail_type(const char* expected) const;
-  void expect(Type expected) const;
-  Json* find_mutable(std::string_view key);
-  // Gives this value the path `path` and its children the paths below it.
-  void move_to(const std::string& path);
-  void write(std::string& out, int indent, int depth) const;
+  void expect_object() const;
+  void expect_array() const;
 
-  Type type_ = Type::null;
-  bool bool_ = false;
-  double number_ = 0.0;
-  std::string string_;
-  std::vector<Json> items_;
-  // Looked up linearly: scene objects have a handful of keys, and the order must be kept anyway.
-  std::vector<Member> members_;
+  std::unique_ptr<Value> value_;
   std::string path_;
 };
 
-// Strict RFC 8259 parser. Errors read "source_name:line:column: what was expected". A number whose
-// magnitude is beyond a double, too large or too small (1e400, 1e-400), is an error rather than an
-// infinity or a silent zero.
+// Strict RFC 8259 parser. Syntax errors read "source_name:line:column: " and nlohmann's description. A
+// number whose magnitude is beyond a double, too large or too small (1e400, 1e-400), is an error rather
+// than an infinity or a silent zero; so is a duplicate key ("source_name: duplicate key 'contact.c_nu'").
 Json parse_json(const std::string& text, const std::string& source_name);
 // Throws "cannot open scene 'path'" when the file cannot be read.
 Json read_json_file(const std::string& path);
 
 // A command-line value: JSON when it parses (1e14, true, null, [1,2], "P2"), otherwise the text itself as
-// a string (P2). Text starting with '[', '{' or '"' must be valid JSON: a typo there is reported, not
-// silently taken as a string.
-Json parse_json_value_from_cli(const std::string& text);
+// a string (P2). Text that starts with '[', '{' or '"', or reads as a number (1e400, nan), must be valid
+// JSON: a typo or an unrepresentable number is reported, not silently taken as a string. Errors start
+// with `source_name`.
+Json parse_json_value_from_cli(const std::string& text, const std::string& source_name = "command-line value");
 
 // Full paths of the keys of `object` that are not in `allowed`, in document order.
+std::vector<std::string> unknown_keys(const Json& object, const std::vector<std::string>& allowed);
 std::vector<std::string> unknown_keys(const Json& object, std::initializer_list<std::string_view> allowed);
 // Throws "scene: unknown key 'contact.c_nuu' (known: c_nu, c_tau)" when unknown_keys is not empty.
+void require_known_keys(const Json& object, const std::vector<std::string>& allowed);
 void require_known_keys(const Json& object, std::initializer_list<std::string_view> allowed);
 void require_known_keys(const Json& object, const std::vector<std::string>& allowed);
 

@@ -9,7 +9,7 @@ namespace pc {
 ParameterValues read_parameters(const Json& object, const ChosenEntry& entry) {
   ParameterValues values;
   for (const ParameterDeclaration& d : *entry.parameters) {
-    const Json* value = object.find(d.name);
+    const auto value = object.find(d.name);
     if (!value) {
       require(!d.required(), "scene: '", object.path(), ".", d.name, "' is required by ", entry.label, " (", d.doc,
               ", ", d.unit, ")");

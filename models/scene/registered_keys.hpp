@@ -44,7 +44,7 @@ RegisteredParameters registered_parameters(const std::string& label, const Regis
 template <class Factory>
 const typename Registry<Factory>::Entry& chosen_entry(const Json& object, const std::string& key,
                                                       const Registry<Factory>& registry, const std::string& fallback = "") {
-  const Json* named = object.find(key);
+  const auto named = object.find(key);
   if (!named && !fallback.empty()) return registry.at(fallback, "scene: '" + object.path() + "." + key + "'");
   const Json& name = object.at(key);
   return registry.at(name.as_string(), "scene: '" + name.path() + "'");

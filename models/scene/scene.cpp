@@ -63,11 +63,11 @@ std::shared_ptr<const Mesh> build_mesh(const Json& m, const std::string& directo
   require_known_keys(m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor"});
   require(!(m.contains("gmsh") && m.contains("generator")), "scene: 'mesh' gives both generator and gmsh: a mesh "
           "is generated or read, not both");
-  if (const Json* file = m.find("gmsh")) {
+  if (const auto file = m.find("gmsh")) {
     std::filesystem::path path = file->as_string();
     if (path.is_relative()) path = std::filesystem::path(directory) / path;
     GmshOptions options;
-    if (const Json* f = m.find("size_factor")) options.mesh_size_factor = f->as_positive();
+    if (const auto f = m.find("size_factor")) options.mesh_size_factor = f->as_positive();
     auto mesh = std::make_shared<const Mesh>(import_gmsh(path.string(), options));
     scene.mesh_description = message("gmsh '", file->as_string(), "': ", mesh->num_cells(), " ",
                                      to_string(mesh->cell_shape()), "s");
@@ -177,7 +177,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
                            "permittivity_beta"});
     spec.rho = m.at("rho").as_number_at_least(0);
   });
-  const Json* material = json.find("material");
+  const auto material = json.find("material");
   if (material && material->is_object()) {
     problems.check_void([&] {
       spec.B = material->at("elasticity_B").as_matrix();
@@ -185,8 +185,8 @@ Scene load_scene(const Json& json, const std::string& directory) {
     });
     problems.check_void([&] {
       // A directly, or A = tau_v B (a Kelvin-Voigt relaxation time); both only when they agree.
-      const Json* a = material->find("viscosity_A");
-      const Json* tau = material->find("viscosity_tau_v");
+      const auto a = material->find("viscosity_A");
+      const auto tau = material->find("viscosity_tau_v");
       if (a) {
         spec.A = a->as_matrix();
         check_stiffness("material.viscosity_A", spec.A, dim, /*allow_zero=*/true);
@@ -203,8 +203,8 @@ Scene load_scene(const Json& json, const std::string& directory) {
               "scene: 'material.viscosity_A' and 'material.viscosity_tau_v' disagree (A != tau_v B): give one of them");
     });
     problems.check_void([&] {
-      const Json* e = material->find("piezo_E");
-      const Json* beta = material->find("permittivity_beta");
+      const auto e = material->find("piezo_E");
+      const auto beta = material->find("permittivity_beta");
       require((e == nullptr) == (beta == nullptr), "scene: material.piezo_E and material.permittivity_beta go "
               "together (both for a piezoelectric body, neither for a purely mechanical one)");
       if (!e) return;
@@ -220,9 +220,9 @@ Scene load_scene(const Json& json, const std::string& directory) {
   problems.check_void([&] {
     const Json& r = json.at("regions");
     require_known_keys(r, {"clamped", "traction", "contact", "grounded", "charge"});
-    if (const Json* c = r.find("clamped")) spec.clamped = names_of(*c);
-    if (const Json* g = r.find("grounded")) spec.grounded = names_of(*g);
-    if (const Json* c = r.find("contact")) {
+    if (const auto c = r.find("clamped")) spec.clamped = names_of(*c);
+    if (const auto g = r.find("grounded")) spec.grounded = names_of(*g);
+    if (const auto c = r.find("contact")) {
       spec.contact = c->as_string();
       require(!spec.contact.empty(), "scene: 'regions.contact' is empty: name the contact region, or leave the key out "
               "for a body without contact");
@@ -231,7 +231,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
     for (const std::string& n : spec.clamped) require_region(*spec.mesh, r.at("clamped"), n, RegionKind::Faces);
     for (const std::string& n : spec.grounded) require_region(*spec.mesh, r.at("grounded"), n, RegionKind::Faces);
     if (!spec.contact.empty()) require_region(*spec.mesh, r.at("contact"), spec.contact, RegionKind::Faces);
-    if (const Json* c = r.find("charge"))
+    if (const auto c = r.find("charge"))
       for (const std::string& n : names_of(*c)) require_region(*spec.mesh, *c, n, RegionKind::Faces);
     require(!spec.clamped.empty(), "scene: 'regions.clamped' is empty: the body needs a clamped side (meas Gamma_D > 0)");
     require(!electric || !spec.grounded.empty(), "scene: 'regions.grounded' is empty: the potential needs a grounded "
@@ -241,11 +241,11 @@ Scene load_scene(const Json& json, const std::string& directory) {
   problems.check_void([&] {
     const Json& loads = json.at("loads");
     require_known_keys(loads, {"f0", "traction", "q0", "q_b"});
-    if (const Json* f0 = loads.find("f0")) {
+    if (const auto f0 = loads.find("f0")) {
       const auto value = f0->as_vector(size_t(dim));
       if (!all_zero(value)) spec.body_force = make_load(value, "constant");
     }
-    if (const Json* t = loads.find("traction")) {
+    if (const auto t = loads.find("traction")) {
       for (const Json& item : t->as_array()) {
         require_known_keys(item, {"region", "value", "time"});
         const std::string region = item.at("region").as_string();
@@ -257,9 +257,9 @@ Scene load_scene(const Json& json, const std::string& directory) {
                                   time == "constant" ? LoadTime::Constant : LoadTime::Varying});
       }
     }
-    if (const Json* q0 = loads.find("q0"); q0 && q0->as_number() != 0 && electric)
+    if (const auto q0 = loads.find("q0"); q0 && q0->as_number() != 0 && electric)
       spec.volume_charge = make_load({q0->as_number()}, "constant");
-    if (const Json* qb = loads.find("q_b"); qb && qb->as_number() != 0 && electric)
+    if (const auto qb = loads.find("q_b"); qb && qb->as_number() != 0 && electric)
       for (const std::string& region : names_of(json.at("regions").at("charge")))
         spec.surface_charges.push_back({region, make_load({qb->as_number()}, "constant"), LoadTime::Constant});
   });
@@ -305,8 +305,8 @@ Scene load_scene(const Json& json, const std::string& directory) {
     spec.scheme = {scheme.name, read_parameters(t, chosen)};
     scene.end_time = t.at("T").as_positive();
     scene.steps = t.at("steps").as_int_at_least(1);
-    if (const Json* x = t.find("max_attempts")) scene.max_attempts = x->as_int_at_least(0);
-    if (const Json* x = t.find("max_wall_seconds")) scene.max_wall_seconds = x->as_number_in(0, 1e12);
+    if (const auto x = t.find("max_attempts")) scene.max_attempts = x->as_int_at_least(0);
+    if (const auto x = t.find("max_wall_seconds")) scene.max_wall_seconds = x->as_number_in(0, 1e12);
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     const std::string p = t.contains("prediction") ? t.at("prediction").as_string() : "previous";
@@ -316,61 +316,61 @@ Scene load_scene(const Json& json, const std::string& directory) {
   });
 
   problems.check_void([&] {
-    const Json* s = json.find("solver");
+    const auto s = json.find("solver");
     if (!s) return;
     require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog",
                             "cutback_factor", "condensed", "condensation"});
-    if (const Json* x = s->find("condensed"))
+    if (const auto x = s->find("condensed"))
       scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
     scene.newton.condensation =
         chosen_entry(*s, "condensation", condensation_registry(), NewtonOptions{}.condensation).name;
     scene.newton.linear_solver =
         chosen_entry(*s, "linear", linear_solver_registry(), NewtonOptions{}.linear_solver).name;
-    if (const Json* x = s->find("max_iterations")) scene.newton.max_iterations = x->as_int_at_least(1);
-    if (const Json* x = s->find("relative_tolerance")) scene.newton.relative_tolerance = x->as_number_in(0, 1);
-    if (const Json* x = s->find("line_search")) scene.newton.line_search = x->as_bool();
-    if (const Json* x = s->find("watchdog")) scene.newton.watchdog = x->as_int_at_least(0);
-    if (const Json* x = s->find("cutback_factor")) {
+    if (const auto x = s->find("max_iterations")) scene.newton.max_iterations = x->as_int_at_least(1);
+    if (const auto x = s->find("relative_tolerance")) scene.newton.relative_tolerance = x->as_number_in(0, 1);
+    if (const auto x = s->find("line_search")) scene.newton.line_search = x->as_bool();
+    if (const auto x = s->find("watchdog")) scene.newton.watchdog = x->as_int_at_least(0);
+    if (const auto x = s->find("cutback_factor")) {
       scene.cutback_factor = x->as_number_in(0, 1);
       require(scene.cutback_factor > 0 && scene.cutback_factor < 1, "scene: 'solver.cutback_factor' must be in (0, 1)");
     }
   });
 
   problems.check_void([&] {
-    const Json* o = json.find("output");
+    const auto o = json.find("output");
     if (!o) return;
     require_known_keys(*o, {"vtu_every", "progress_every", "probes", "grid", "slip_threshold", "phi_f_sweep",
                             "sweep_steps"});
     SceneOutput& out = scene.output;
-    if (const Json* x = o->find("vtu_every")) out.vtu_every = x->as_int_at_least(1);
-    if (const Json* x = o->find("progress_every")) out.progress_every = x->as_int_at_least(1);
-    if (const Json* p = o->find("probes")) {
+    if (const auto x = o->find("vtu_every")) out.vtu_every = x->as_int_at_least(1);
+    if (const auto x = o->find("progress_every")) out.progress_every = x->as_int_at_least(1);
+    if (const auto p = o->find("probes")) {
       require_known_keys(*p, {"corner", "center"});
       const auto corner = p->at("corner").as_vector(size_t(dim)), center = p->at("center").as_vector(size_t(dim));
       for (int d = 0; d < dim; ++d) out.corner[d] = corner[d], out.center[d] = center[d];
     }
-    if (const Json* g = o->find("grid")) {
+    if (const auto g = o->find("grid")) {
       require_known_keys(*g, {"x", "y"});
       const auto x = g->at("x").as_vector(3), y = g->at("y").as_vector(3);
       require(x[2] >= 1 && y[2] >= 1 && x[2] == std::floor(x[2]) && y[2] == std::floor(y[2]), "scene: '", g->path(),
               "': the third entry of x and y is a number of points (>= 1)");
       out.grid = {x[0], x[1], y[0], y[1], int(x[2]), int(y[2])};
     }
-    if (const Json* x = o->find("slip_threshold")) out.slip_threshold = x->as_number_at_least(0);
-    if (const Json* x = o->find("phi_f_sweep")) out.phi_f_sweep = x->as_vector();
-    if (const Json* x = o->find("sweep_steps")) out.sweep_steps = x->as_int_at_least(1);
+    if (const auto x = o->find("slip_threshold")) out.slip_threshold = x->as_number_at_least(0);
+    if (const auto x = o->find("phi_f_sweep")) out.phi_f_sweep = x->as_vector();
+    if (const auto x = o->find("sweep_steps")) out.sweep_steps = x->as_int_at_least(1);
   });
   spec.slip_threshold = scene.output.slip_threshold;
 
   problems.check_void([&] {
-    const Json* o = json.find("output");
+    const auto o = json.find("output");
     if (!spec.mesh || !o) return;
     const PointLocator locator(*spec.mesh);
-    if (const Json* p = o->find("probes")) {
+    if (const auto p = o->find("probes")) {
       require_points_in_mesh(locator, p->at("corner"), {scene.output.corner});
       require_points_in_mesh(locator, p->at("center"), {scene.output.center});
     }
-    if (const Json* g = o->find("grid")) require_points_in_mesh(locator, *g, scene.output.grid.points());
+    if (const auto g = o->find("grid")) require_points_in_mesh(locator, *g, scene.output.grid.points());
   });
 
   problems.throw_if_any(scene.name);
@@ -384,7 +384,8 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
     require(eq != std::string::npos && eq > 0, "--set '", o, "': expected key=value, e.g. --set contact.c_nu=1e14");
     // A key the file omits may be set (e.g. time.scheme): load_scene checks every key against the ones
     // its object knows, so a misspelt one is still refused, with the known keys listed.
-    json.set_path(o.substr(0, eq), parse_json_value_from_cli(o.substr(eq + 1)), Json::NewKeys::allow);
+    const std::string key = o.substr(0, eq);
+    json.set_path(key, parse_json_value_from_cli(o.substr(eq + 1), "--set " + key), Json::NewKeys::allow);
   }
   return load_scene(json, std::filesystem::path(path).parent_path().string());
 }

@@ -2,7 +2,7 @@
 // A scene file (JSON) read into everything a run needs: the mesh, the physics it contains (which decides
 // the bricks, see piezo_contact_recipe.hpp), the foundations to run, time span, solver and outputs.
 // Loading validates the whole scene before anything is computed and reports every problem at once, each
-// with the dotted path of the offending value ("contact.c_nu must be a number, got a string").
+// with the dotted path of the offending value ("contact.c_nu must be a number, got the string \"1e12\"").
 // The format is documented in docs/scenes.md; scenes/paper2d.json is the paper's test.
 #include <array>
 #include <string>

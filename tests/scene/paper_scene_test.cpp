@@ -9,6 +9,7 @@
 
 #include "assembly/error.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
@@ -119,6 +120,15 @@ TEST(PaperScene, InvalidScenesAreRefusedWithEveryProblemAndItsPath) {
     EXPECT_NE(what.find("material.rho"), std::string::npos) << what;
     EXPECT_NE(what.find("'floor'"), std::string::npos) << what;
   }
+}
+
+// A --set value that reads as a number but is none a double holds is an error naming the key, not a string.
+TEST(PaperScene, SetRefusesNumbersOutOfTheRangeOfADouble) {
+  const std::string range = " is out of the range of a double (nonzero magnitudes from 4.9e-324 to 1.8e308)";
+  EXPECT_EQ(testing::error_of([] { coarse({"contact.c_nu=1e400"}); }), "--set contact.c_nu:1:1: number 1e400" + range);
+  EXPECT_EQ(testing::error_of([] { coarse({"contact.c_nu=-1e400"}); }),
+            "--set contact.c_nu:1:1: number -1e400" + range);
+  EXPECT_EQ(testing::error_of([] { coarse({"contact.c_nu=1e-400"}); }), "--set contact.c_nu: number 1e-400" + range);
 }
 
 }  // namespace
