@@ -10,8 +10,19 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Below this estimate of 1/cond(S_c), S_c counts as singular and S_c + D is factorised per iteration.
-constexpr double kMinSchurReciprocalCondition = 1e-13;
+// S_c counts as singular, and S_c + D is factorised per iteration, when the estimate of its smallest
+// singular value, rcond ||S_c||_1, is below this fraction of the size of A's entries in the condensed rows:
+// what elimination leaves there is then round-off. (rcond alone is scale-free: a 1 x 1 S_c of pure
+// round-off, 1e-17 where A holds ones, would count as perfectly conditioned.)
+constexpr double kMinSchurRelativeSize = 1e-13;
+
+// max |A_ij| over the rows of the given dofs.
+double largest_entry_in_rows(const CsrMatrix& A, const std::vector<int>& rows) {
+  double largest = 0;
+  for (int r : rows)
+    for (CsrMatrix::InnerIterator it(A, r); it; ++it) largest = std::max(largest, std::abs(it.value()));
+  return largest;
+}
 
 }  // namespace
 
@@ -68,8 +79,10 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
     schur_->factorize(A);
     cost.factorize_seconds += seconds_since(t);
     t = Clock::now();
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(schur_->schur());
-    schur_regular_ = lu.rcond() > kMinSchurReciprocalCondition;
+    const Eigen::MatrixXd& S = schur_->schur();
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(S);
+    const double smallest = lu.rcond() * S.cwiseAbs().colwise().sum().maxCoeff();
+    schur_regular_ = smallest > kMinSchurRelativeSize * largest_entry_in_rows(A, nonlinear_);
     if (schur_regular_) schur_inverse_ = lu.inverse();
     cost.condensation_seconds += seconds_since(t);
   } else {

@@ -183,6 +183,20 @@ TEST(NonlinearProblem, ASingularLinearPartIsSchurCondensedOrSolvedInFullFromThen
     EXPECT_TRUE(report.condensed);
     EXPECT_LT((problem.free_values() - full).norm(), 1e-12 * full.norm());
   }
+  {
+    // Held by one cubic spring: the Schur complement of that node is 1 x 1 and zero up to round-off. It
+    // must count as singular (S_c + D factorised), not be inverted into 1e16: the answer is the full one.
+    const Eigen::VectorXd full = solve_in_full(n, false, {n - 1});
+    SpringChain problem(n, false, {n - 1});
+    NewtonOptions options;
+    options.condensation = "schur";
+    const NewtonReport report = NewtonSolver(options).solve(problem);
+    ASSERT_TRUE(report.converged()) << report.message;
+    EXPECT_TRUE(report.condensed);
+    problem.assemble(false);
+    EXPECT_LT(problem.residual().norm(), 1e-10) << "converged, so the residual must be small";
+    EXPECT_LT((problem.free_values() - full).norm(), 1e-10 * full.norm());
+  }
   // Columns needs A regular: its factorisation (or its solve) fails, and the problem is solved in full.
   const Eigen::VectorXd full = solve_in_full(n, false, {n - 1});
   SpringChain problem(n, false, {n - 1});
