@@ -6,8 +6,11 @@
 //                                          [] { return std::make_unique<UmfpackSolver>(); }});
 //
 // A kind's registry is a function-local static of one function defined in a .cpp (so that one instance
-// exists however many shared libraries include this header); registration runs when the library that
-// holds it is loaded, so a plugin's entries join the built-in ones.
+// exists however many shared libraries include this header). Registration runs when the library or
+// program that holds it is loaded. In a plugin (compiled with PIEZOCONTACT_PLUGIN, which
+// piezocontact_add_plugin() sets) it is deferred instead: the loader first checks the plugin's version,
+// then runs its registrations (models/scene/plugins.hpp), so a plugin built against another version never
+// touches the registries.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -73,13 +76,27 @@ class Registry {
 
 }  // namespace pc
 
+#ifdef PIEZOCONTACT_PLUGIN
+#include <functional>
+namespace pc::plugin_detail {
+// The registrations of this plugin, run by its entry point once the loader has checked its version.
+// Hidden: every plugin has its own list.
+__attribute__((visibility("hidden"))) inline std::vector<std::function<void()>>& pending_registrations() {
+  static std::vector<std::function<void()>> pending;
+  return pending;
+}
+}  // namespace pc::plugin_detail
+#define PC_REGISTRY_RUN(action) (pc::plugin_detail::pending_registrations().push_back([] { action; }), true)
+#else
+#define PC_REGISTRY_RUN(action) (action, true)
+#endif
+
 #define PC_REGISTRY_CONCAT_INNER(a, b) a##b
 #define PC_REGISTRY_CONCAT(a, b) PC_REGISTRY_CONCAT_INNER(a, b)
-// Adds an entry to a registry when the library (or plugin) that holds this line is loaded.
-#define PC_REGISTER(registry, ...)                                                                  \
-  namespace {                                                                                       \
-  [[maybe_unused]] const bool PC_REGISTRY_CONCAT(pc_registered_, __LINE__) = [] {                   \
-    (registry).add(__VA_ARGS__);                                                                    \
-    return true;                                                                                    \
-  }();                                                                                              \
+// Adds an entry to a registry when the library or program that holds this line is loaded (a plugin's:
+// when the loader has accepted it).
+#define PC_REGISTER(registry, ...)                                                                      \
+  namespace {                                                                                           \
+  [[maybe_unused]] const bool PC_REGISTRY_CONCAT(pc_registered_, __LINE__) =                            \
+      PC_REGISTRY_RUN((registry).add(__VA_ARGS__));                                                     \
   }

@@ -1,4 +1,5 @@
-# install() and an exported CMake package, so that another project can
+# install() and an exported CMake package (the four layer libraries, the runner piezocontact::runner, the
+# headers, piezocontact_add_plugin()), so that another project can
 #   find_package(piezocontact REQUIRED)
 #   target_link_libraries(app PRIVATE piezocontact::piezocontact)   # or one layer, e.g. piezocontact::piezocontact_bricks
 include(GNUInstallDirs)
@@ -24,4 +25,6 @@ install(FILES
   ${PROJECT_BINARY_DIR}/piezocontactConfig.cmake
   ${PROJECT_BINARY_DIR}/piezocontactConfigVersion.cmake
   ${PROJECT_SOURCE_DIR}/cmake/PiezocontactDependencies.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/PiezocontactPlugin.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/piezocontact_plugin_entry.cpp
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/piezocontact)

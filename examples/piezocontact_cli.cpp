@@ -1,19 +1,21 @@
 // The command-line runner (installed as `piezocontact`):
 //   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet]
 //   piezocontact check SCENE [--set key=value ...]
-//   piezocontact list
-//   piezocontact describe [NAME] [--markdown]
+//   piezocontact list [--plugin LIB ...]
+//   piezocontact describe [NAME] [--markdown] [--plugin LIB ...]
 // `run` validates the whole scene, then runs each foundation it lists and writes the results (see
 // models/scene/scene_runner.hpp) as it goes. `check` validates and builds every foundation's model
 // without running it, so it refuses whatever `run` would refuse before its first step. --set overrides
 // any scene value by its dotted path: --set contact.c_nu=1e14 --set mesh.nx=120. `list` and `describe`
-// print what a scene can name (laws, time schemes, solvers) with every parameter, from the registries.
+// print what a scene can name (laws, time schemes, solvers) with every parameter, from the registries;
+// --plugin loads a plugin first (a scene loads those it names in "plugins").
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "assembly/error.hpp"
+#include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_runner.hpp"
 
@@ -23,8 +25,8 @@ int usage() {
   std::fprintf(stderr,
                "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet]\n"
                "       piezocontact check SCENE [--set key=value ...]\n"
-               "       piezocontact list\n"
-               "       piezocontact describe [NAME] [--markdown]\n");
+               "       piezocontact list [--plugin LIB ...]\n"
+               "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n");
   return 2;
 }
 
@@ -32,19 +34,19 @@ int usage() {
 
 // `list` and `describe`: what the registries hold.
 int catalog(const std::string& command, int argc, char** argv) {
-  const auto sections = pc::registry_catalog();
-  if (command == "list") {
-    if (argc != 2) return usage();
-    std::fputs(pc::catalog_list(sections).c_str(), stdout);
-    return 0;
-  }
   std::string name;
   bool markdown = false;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--markdown") markdown = true;
-    else if (name.empty() && arg.rfind("--", 0) != 0) name = arg;
+    if (arg == "--plugin" && i + 1 < argc) pc::load_plugin(argv[++i]);
+    else if (arg == "--markdown" && command == "describe") markdown = true;
+    else if (name.empty() && arg.rfind("--", 0) != 0 && command == "describe") name = arg;
     else return usage();
+  }
+  const auto sections = pc::registry_catalog();
+  if (command == "list") {
+    std::fputs(pc::catalog_list(sections).c_str(), stdout);
+    return 0;
   }
   if (markdown) {
     if (!name.empty()) return usage();
@@ -61,8 +63,14 @@ int catalog(const std::string& command, int argc, char** argv) {
 }
 
 int main(int argc, char** argv) {
-  if (argc >= 2 && (std::string(argv[1]) == "list" || std::string(argv[1]) == "describe"))
-    return catalog(argv[1], argc, argv);
+  if (argc >= 2 && (std::string(argv[1]) == "list" || std::string(argv[1]) == "describe")) {
+    try {
+      return catalog(argv[1], argc, argv);
+    } catch (const pc::Error& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 1;
+    }
+  }
   if (argc < 3) return usage();
   const std::string command = argv[1];
   if (command != "run" && command != "check") return usage();

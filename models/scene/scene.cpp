@@ -11,6 +11,7 @@
 #include "assembly/point_locator.hpp"
 #include "bricks/law_registry.hpp"
 #include "bricks/voigt.hpp"
+#include "models/scene/plugins.hpp"
 #include "models/scene/registered_keys.hpp"
 #include "models/solvers/condensed_solve.hpp"
 
@@ -158,9 +159,25 @@ Scene load_scene(const Json& json, const std::string& directory) {
     return name;
   }).value_or("unnamed");
   problems.check_void([&] {
-    require_known_keys(json, {"name", "about", "mesh", "regions", "material", "contact", "foundation", "loads", "time",
-                              "solver", "output"});
+    require_known_keys(json, {"name", "about", "plugins", "mesh", "regions", "material", "contact", "foundation", "loads",
+                              "time", "solver", "output"});
   });
+  // Plugins first: the laws they register are names the rest of the scene may use.
+  if (const auto plugins = json.find("plugins")) {
+    problems.check_void([&] {
+      for (const Json& item : plugins->as_array()) {
+        std::filesystem::path path = item.as_string();
+        if (path.is_relative()) path = std::filesystem::path(directory) / path;
+        problems.check_void([&] {
+          try {
+            load_plugin(path.string());
+          } catch (const Error& e) {
+            fail("scene: '", item.path(), "': ", e.what());
+          }
+        });
+      }
+    });
+  }
   PiezoContactSpec& spec = scene.spec;
 
   problems.check_void([&] { spec.mesh = build_mesh(json.at("mesh"), directory, scene); });
