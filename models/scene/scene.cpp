@@ -10,6 +10,7 @@
 #include "assembly/mesh_generators.hpp"
 #include "assembly/point_locator.hpp"
 #include "bricks/law_registry.hpp"
+#include "bricks/piezo_materials.hpp"
 #include "bricks/voigt.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registered_keys.hpp"
@@ -187,17 +188,45 @@ Scene load_scene(const Json& json, const std::string& directory) {
   });
   const int dim = spec.mesh ? spec.mesh->dim() : 2;
 
-  // Material: validated here so that messages carry the scene paths.
+  // Material: validated here so that messages carry the scene paths. A preset (material.preset, poled
+  // along material.poling) gives rho, elasticity_B, piezo_E and permittivity_beta; each of those keys
+  // given next to it overrides the preset's value (e.g. another density).
+  std::optional<PiezoTensors> preset;
+  bool preset_named = false;  // a preset was named, found or not (if not, its tensors are not missing)
   problems.check_void([&] {
     const Json& m = json.at("material");
     require_known_keys(m, {"name", "rho", "voigt_order", "elasticity_B", "viscosity_tau_v", "viscosity_A", "piezo_E",
-                           "permittivity_beta"});
-    spec.rho = m.at("rho").as_number_at_least(0);
+                           "permittivity_beta", "preset", "poling"});
+    problems.check_void([&] {
+      const auto p = m.find("preset");
+      const auto poling = m.find("poling");
+      preset_named = p.has_value();
+      if (!p) {
+        require(!poling, "scene: 'material.poling' goes with 'material.preset' (the axis the preset is poled "
+                "along); explicit tensors are written for their own axes");
+        return;
+      }
+      const PiezoMaterialPreset& material = piezo_material(p->as_string(), "scene: '" + p->path() + "'");
+      require(poling.has_value(), "scene: 'material.poling' is required with 'material.preset': the poling axis, x, "
+              "y or z (the preset's tables are poled along z)");
+      const Axis axis = axis_from_name(poling->as_string(), "scene: '" + poling->path() + "'");
+      require(dim == 3 || axis != Axis::z, "scene: '", poling->path(), "' is z, but a 2D model (plane strain in "
+              "x-y) is poled in its plane: x or y");
+      preset = material.tensors(dim, axis);
+    });
+    if (preset && !m.contains("rho")) spec.rho = preset->rho;
+    else if (m.contains("rho") || !preset_named) spec.rho = m.at("rho").as_number_at_least(0);
   });
   const auto material = json.find("material");
   if (material && material->is_object()) {
+    // elasticity_B as given, else the preset's; empty when a named preset was not found (already reported).
+    const auto elasticity = [&]() -> Eigen::MatrixXd {
+      if (material->contains("elasticity_B") || !preset_named) return material->at("elasticity_B").as_matrix();
+      return preset ? preset->B : Eigen::MatrixXd();
+    };
     problems.check_void([&] {
-      spec.B = material->at("elasticity_B").as_matrix();
+      spec.B = elasticity();
+      if (preset_named && !preset && !material->contains("elasticity_B")) return;
       check_stiffness("material.elasticity_B", spec.B, dim);
     });
     problems.check_void([&] {
@@ -210,7 +239,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
       }
       if (!tau) return;
       const double tau_v = tau->as_number_at_least(0);
-      const Eigen::MatrixXd B = material->at("elasticity_B").as_matrix();
+      const Eigen::MatrixXd B = elasticity();
       if (!a) {
         spec.A = tau_v * B;
         return;
@@ -222,16 +251,24 @@ Scene load_scene(const Json& json, const std::string& directory) {
     problems.check_void([&] {
       const auto e = material->find("piezo_E");
       const auto beta = material->find("permittivity_beta");
-      require((e == nullptr) == (beta == nullptr), "scene: material.piezo_E and material.permittivity_beta go "
-              "together (both for a piezoelectric body, neither for a purely mechanical one)");
-      if (!e) return;
-      spec.E = e->as_matrix();
-      spec.beta = beta->as_matrix();
+      if (preset_named) {
+        // The preset's, each unless given; nothing to add when the preset was not found.
+        if (!preset && !(e && beta)) return;
+        spec.E = e ? e->as_matrix() : preset->E;
+        spec.beta = beta ? beta->as_matrix() : preset->beta;
+      } else {
+        require((e == nullptr) == (beta == nullptr), "scene: material.piezo_E and material.permittivity_beta go "
+                "together (both for a piezoelectric body, neither for a purely mechanical one)");
+        if (!e) return;
+        spec.E = e->as_matrix();
+        spec.beta = beta->as_matrix();
+      }
       check_piezoelectric("material.piezo_E", spec.E, dim);
       check_permittivity("material.permittivity_beta", spec.beta, dim);
     });
   }
-  const bool electric = spec.E.size() > 0;
+  // Every preset is piezoelectric: one that was named but not found is not a mechanical body either.
+  const bool electric = spec.E.size() > 0 || (preset_named && !preset);
 
   // Regions and what acts on them.
   problems.check_void([&] {
