@@ -14,6 +14,7 @@
 #include "bricks/laws/normal_laws.hpp"
 #include "bricks/normal_response_brick.hpp"
 #include "bricks/permittivity_brick.hpp"
+#include "bricks/piezo_materials.hpp"
 #include "bricks/piezoelectric_brick.hpp"
 #include "bricks/source_bricks.hpp"
 #include "bricks/viscosity_brick.hpp"
@@ -36,13 +37,13 @@ int main() {
     BackwardEuler scheme;
     scheme.attach(model, /*with_acceleration=*/true);
 
-    // PZT-5H, plane strain, poled along +y; Kelvin-Voigt viscosity A = 0.01 s B.
-    const Eigen::MatrixXd B{{127.205e9, 84.6702e9, 0}, {84.6702e9, 117.436e9, 0}, {0, 0, 22.9885e9}};
-    model.set_constant("rho", 7800.0);
-    model.set_constant("A", Eigen::MatrixXd(0.01 * B));
-    model.set_constant("B", B);
-    model.set_constant("E", Eigen::MatrixXd{{0, 0, 17.0345}, {-6.62281, 23.2403, 0}});
-    model.set_constant("beta", Eigen::MatrixXd{{1.5091e-8, 0}, {0, 1.2693e-8}});
+    // PZT-5H from the library's presets, plane strain, poled along +y; Kelvin-Voigt viscosity A = 0.01 s B.
+    const PiezoTensors pzt = piezo_material("PZT-5H").tensors(2, Axis::y);
+    model.set_constant("rho", pzt.rho);
+    model.set_constant("A", Eigen::MatrixXd(0.01 * pzt.B));
+    model.set_constant("B", pzt.B);
+    model.set_constant("E", pzt.E);
+    model.set_constant("beta", pzt.beta);
     // The contact laws' parameters are model constants too: the normal law's and the user's law's.
     model.set_constants(law_values(LinearDampedResponse{1e10}));
     model.set_constants(law_values(VelocityWeakeningCoulomb{0.6, 0.3, 1e-9, 1e-12}));

@@ -3,6 +3,7 @@
 #include "assembly/error.hpp"
 #include "assembly/linear_solver.hpp"
 #include "bricks/law_registry.hpp"
+#include "bricks/piezo_materials.hpp"
 #include "models/solvers/condensed_solve.hpp"
 #include "models/time_scheme.hpp"
 
@@ -33,7 +34,8 @@ std::string table_cell(const std::string& text) {
 }  // namespace
 
 std::vector<CatalogSection> registry_catalog() {
-  return {section(normal_law_registry(), "contact"), section(friction_law_registry(), "contact"),
+  return {section(piezo_material_registry(), "material"),
+          section(normal_law_registry(), "contact"), section(friction_law_registry(), "contact"),
           section(foundation_law_registry(), "foundation.<name>"), section(time_scheme_registry(), "time"),
           section(linear_solver_registry(), "solver"), section(condensation_registry(), "solver")};
 }

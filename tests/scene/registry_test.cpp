@@ -42,7 +42,8 @@ TEST(Registry, DocsTablesAreTheRegistriesOwn) {
 
 TEST(Registry, EveryNameAScenesGivesIsRegistered) {
   const std::string list = catalog_list(registry_catalog());
-  for (const char* line : {"normal laws (contact.law_normal): linear_damped normal_compliance power_damped",
+  for (const char* line : {"piezoelectric materials (material.preset): BaTiO3 PZT-4 PZT-5A PZT-5H",
+                           "normal laws (contact.law_normal): linear_damped normal_compliance power_damped",
                            "friction laws (contact.law_tangential): coulomb none tresca viscous",
                            "foundation laws (foundation.<name>.type): conductive insulated pressure_activated",
                            "time schemes (time.scheme): backward_euler bdf2 theta",
