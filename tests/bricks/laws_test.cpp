@@ -17,6 +17,7 @@
 #include "assembly/parameters.hpp"
 #include "bricks/conductive_foundation_brick.hpp"
 #include "bricks/friction_brick.hpp"
+#include "bricks/laws/direction.hpp"
 #include "bricks/laws/foundation_laws.hpp"
 #include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/law_parameters.hpp"
@@ -144,6 +145,78 @@ TEST(FrictionLaws, ClosedForms) {
   RegularizedCoulomb{0.5, 1e-9}(v, 2, D::variable(0.0, 0), td);
   EXPECT_EQ(td[0].v, 0.0);
   EXPECT_NEAR(td[0].d[0], 0.5, 1e-12);
+}
+
+// ---- the direction term g(|r|) r / |r| ------------------------------------------------------------------
+
+template <int N>
+bool all_finite(const Dual<N>* x, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(x[i].v)) return false;
+    for (double d : x[i].d)
+      if (!std::isfinite(d)) return false;
+  }
+  return true;
+}
+
+TEST(Direction, ScaledDirectionIsSafeAtZeroTinyAndHuge) {
+  using D = Dual<3>;
+  const double eps = 0.1;
+  const auto tanh_of = [eps](const auto& rho) { using std::tanh; return tanh(rho / eps); };
+  for (const int dim : {2, 3}) {
+    // r = 0: the limit g'(0) r, with the derivative g'(0) I = I / eps.
+    D zero[3] = {D::variable(0.0, 0), D::variable(0.0, 1), D::variable(0.0, 2)};
+    D out[3];
+    scaled_direction(zero, dim, tanh_of, out);
+    ASSERT_TRUE(all_finite(out, dim)) << dim;
+    for (int i = 0; i < dim; ++i) {
+      EXPECT_EQ(out[i].v, 0.0);
+      for (int j = 0; j < dim; ++j) EXPECT_NEAR(out[i].d[j], i == j ? 1 / eps : 0.0, 1e-12 / eps) << i << j;
+    }
+    // |r| = 1e-300 (|r|^2 underflows): value g'(0) r, derivative I / eps.
+    D tiny[3] = {D::variable(1e-300, 0), D::variable(-1e-300, 1), D::variable(0.5e-300, 2)};
+    scaled_direction(tiny, dim, tanh_of, out);
+    ASSERT_TRUE(all_finite(out, dim)) << dim;
+    for (int i = 0; i < dim; ++i) {
+      EXPECT_NEAR(out[i].v, tiny[i].v / eps, 1e-12 * 1e-300 / eps);
+      for (int j = 0; j < dim; ++j) EXPECT_NEAR(out[i].d[j], i == j ? 1 / eps : 0.0, 1e-9 / eps) << i << j;
+    }
+    // |r| = 1e300 (|r|^2 overflows): the unit vector r / |r|, derivative (I - e e^T) / |r|.
+    D huge[3] = {D::variable(1e300, 0), D::variable(-1e300, 1), D::variable(2e300, 2)};
+    scaled_direction(huge, dim, tanh_of, out);
+    ASSERT_TRUE(all_finite(out, dim)) << dim;
+    const double norm = dim == 2 ? std::sqrt(2.0) * 1e300 : std::sqrt(6.0) * 1e300;
+    for (int i = 0; i < dim; ++i) {
+      EXPECT_NEAR(out[i].v, huge[i].v / norm, 1e-15);
+      for (int j = 0; j < dim; ++j) {
+        const double expected = ((i == j ? 1.0 : 0.0) - huge[i].v / norm * huge[j].v / norm) / norm;
+        EXPECT_NEAR(out[i].d[j], expected, 1e-12 / norm) << i << j;
+      }
+    }
+  }
+}
+
+TEST(Direction, RegularizedDirectionIsSafeAtZeroTinyAndHuge) {
+  using D = Dual<2>;
+  for (const double eps : {1e-200, 1e-6, 0.5}) {
+    D zero[2] = {D::variable(0.0, 0), D::variable(0.0, 1)}, out[2];
+    regularized_direction(zero, 2, eps, out);
+    ASSERT_TRUE(all_finite(out, 2)) << eps;
+    EXPECT_EQ(out[0].v, 0.0);
+    EXPECT_DOUBLE_EQ(out[0].d[0], 1 / eps);
+    EXPECT_EQ(out[0].d[1], 0.0);
+    D tiny[2] = {D::variable(1e-300, 0), D::variable(0.0, 1)};
+    regularized_direction(tiny, 2, eps, out);
+    ASSERT_TRUE(all_finite(out, 2)) << eps;
+    EXPECT_NEAR(out[0].v, 1e-300 / eps, 1e-12 * 1e-300 / eps);
+    EXPECT_NEAR(out[0].d[0], 1 / eps, 1e-9 / eps);
+    D huge[2] = {D::variable(1e300, 0), D::variable(-1e300, 1)};
+    regularized_direction(huge, 2, eps, out);
+    ASSERT_TRUE(all_finite(out, 2)) << eps;
+    EXPECT_NEAR(out[0].v, 1 / std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(out[1].v, -1 / std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(out[0].d[0], 0.5 / (std::sqrt(2.0) * 1e300), 1e-12 / 1e300);
+  }
 }
 
 // ---- foundation laws ----------------------------------------------------------------------------------
