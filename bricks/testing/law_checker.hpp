@@ -95,15 +95,17 @@ struct LawMap {
     evaluate(x.data(), out.data());
     return out;
   }
+  // The loops are bounded by the arrays' sizes as well as by n and m (which make_map keeps within
+  // them): GCC 12 at -O3 cannot see n <= kMaxInputs through the struct and reports -Warray-bounds.
   Jacobian jacobian(const Point& x, Values* value = nullptr) const {
     std::array<CheckDual, kMaxInputs> xd{};
-    for (int i = 0; i < n; ++i) xd[i] = CheckDual::variable(x[i], i);
+    for (int i = 0; i < kMaxInputs && i < n; ++i) xd[i] = CheckDual::variable(x[i], i);
     std::array<CheckDual, kMaxOutputs> out{};
     evaluate(xd.data(), out.data());
     Jacobian J{};
-    for (int k = 0; k < m; ++k) {
+    for (int k = 0; k < kMaxOutputs && k < m; ++k) {
       if (value) (*value)[k] = out[k].v;
-      for (int i = 0; i < n; ++i) J[k][i] = out[k].d[i];
+      for (int i = 0; i < kMaxInputs && i < n; ++i) J[k][i] = out[k].d[i];
     }
     return J;
   }
@@ -111,6 +113,8 @@ struct LawMap {
 
 template <class Evaluate>
 LawMap<Evaluate> make_map(Evaluate evaluate, int n, int m, std::string what) {
+  require(n >= 1 && n <= kMaxInputs && m >= 1 && m <= kMaxOutputs, "law check: a law of ", n, " inputs and ", m,
+          " outputs (at most ", kMaxInputs, " and ", kMaxOutputs, ")");
   return {std::move(evaluate), n, m, std::move(what)};
 }
 
