@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "assembly/dual.hpp"
@@ -67,16 +68,14 @@ TEST(Laws, PaperLawsPassTheChecker) {
 TEST(NormalLaws, PassTheChecker) {
   const auto stiff = check_scalar_law(LinearDampedResponse{1e16}, {.name = "stiff damped response"});
   EXPECT_TRUE(stiff.ok()) << stiff;
-  // r_+^m with 1 < m < 2 has an unbounded second derivative at 0, which no finite difference resolves:
-  // checked away from the kink only.
-  for (double m : {1.0, 2.0, 2.5, 3.0}) {
+  // r_+^m with 1 < m < 2 has an unbounded second derivative at 0: the kink is checked by right-sided
+  // quotients that converge as h^(m-1).
+  for (double m : {1.0, 1.5, 2.0, 2.5, 3.0}) {
     const auto report = check_scalar_law(
         PowerDampedResponse{1e12, m},
         {.name = message("PowerDampedResponse m = ", m), .extremes = {1e-300, 1e-12, 1e12, 1e90}});
     EXPECT_TRUE(report.ok()) << report;
   }
-  const auto fractional = check_scalar_law(PowerDampedResponse{1e12, 1.5}, {.name = "m = 1.5", .kinks = {}});
-  EXPECT_TRUE(fractional.ok()) << fractional;
   const auto compliance = check_scalar_law(NormalCompliance{1e9, 2.0, 0.1},
                                            {.name = "NormalCompliance", .kinks = {0.1}, .extremes = {1e-300, 1e140}});
   EXPECT_TRUE(compliance.ok()) << compliance;
@@ -477,6 +476,62 @@ TEST(LawChecker, CatchesEachBrokenRule) {
   text << report;
   EXPECT_NE(text.str().find("detached"), std::string::npos) << text.str();
   EXPECT_NE(text.str().find("finite differences"), std::string::npos) << text.str();
+}
+
+// ---- derivatives at kinks: what holds there ---------------------------------------------------------
+
+// c r_+^1.5: C^1, with an unbounded second derivative at the kink r = 0, where difference quotients
+// converge to the derivative 0 only as h^0.5.
+struct ThreeHalvesResponse {
+  static constexpr bool dissipative = true;
+  template <class S>
+  S operator()(const S& r) const {
+    using std::pow;
+    return r < 0.0 ? S(0.0) : 2.0 * pow(r, 1.5);
+  }
+};
+// c r_+ reporting 1.01 c at the kink: a wrong right-sided derivative.
+struct KinkSlopeOff {
+  template <class S>
+  S operator()(const S& r) const {
+    if (r < 0.0) return S(0.0);
+    if (value_of(r) == 0.0) return chain_rule(r, 0.0, 1.01 * 3.0);
+    return 3.0 * r;
+  }
+};
+// c r_+^1.5 reporting the slope 1 at the kink instead of 0.
+struct ThreeHalvesWrongAtKink {
+  template <class S>
+  S operator()(const S& r) const {
+    using std::pow;
+    if (r < 0.0) return S(0.0);
+    if (value_of(r) == 0.0) return chain_rule(r, 0.0, 1.0);
+    return 2.0 * pow(r, 1.5);
+  }
+};
+
+TEST(LawChecker, AcceptsAC1LawWithAnUnboundedSecondDerivativeAtItsKink) {
+  // Default options: the kink at 0 is checked, by right-sided quotients converging as h^0.5.
+  const auto user = check_scalar_law(ThreeHalvesResponse{}, {.name = "2 r_+^1.5"});
+  EXPECT_TRUE(user.ok()) << user;
+  for (double m : {1.25, 1.5, 1.75}) {
+    const auto library = check_scalar_law(PowerDampedResponse{1e12, m}, {.name = message("PowerDampedResponse m = ", m),
+                                                                        .extremes = {1e-300, 1e-12, 1e12, 1e90}});
+    EXPECT_TRUE(library.ok()) << library;
+  }
+  const auto compliance = check_scalar_law(NormalCompliance{1e9, 1.5, 0.1},
+                                           {.name = "NormalCompliance m = 1.5", .kinks = {0.1}, .extremes = {1e-300, 1e140}});
+  EXPECT_TRUE(compliance.ok()) << compliance;
+}
+
+TEST(LawChecker, CatchesAWrongDerivativeAtAKink) {
+  const auto left = check_scalar_law(LeftSidedKink{}, {.name = "left-sided"});
+  EXPECT_FALSE(left.ok()) << left;
+  std::ostringstream text;
+  text << left;
+  EXPECT_NE(text.str().find("right-sided"), std::string::npos) << text.str();
+  EXPECT_FALSE(check_scalar_law(KinkSlopeOff{}).ok());
+  EXPECT_FALSE(check_scalar_law(ThreeHalvesWrongAtKink{}).ok());
 }
 
 // What a user writes for a law of their own: the law and a five-line test.
