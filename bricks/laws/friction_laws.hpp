@@ -18,6 +18,7 @@ struct ViscousFriction {
 
   static constexpr bool affine = true;
   static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;
   static constexpr bool symmetric = true;
   static constexpr bool uses_normal_pressure = false;
 
@@ -39,6 +40,8 @@ struct RegularizedCoulomb {
 
   static constexpr bool affine = false;
   static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;  // in r, at one pressure
+  static constexpr bool bounded = true;   // |p_tau| < mu |p_nu|
   static constexpr bool symmetric = true;  // in r; the pressure coupling is not, and the brick knows it
   static constexpr bool uses_normal_pressure = true;
 
@@ -65,6 +68,8 @@ struct RegularizedTresca {
 
   static constexpr bool affine = false;
   static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;
+  static constexpr bool bounded = true;  // |p_tau| < g
   static constexpr bool symmetric = true;
   static constexpr bool uses_normal_pressure = false;
 

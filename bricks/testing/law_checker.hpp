@@ -18,7 +18,18 @@
 //  - its `affine` claim: f(x) = f(0) + f'(0) x at random x;
 //  - its `dissipative` claim: p(r) r >= 0 (scalar laws), p(r) . r >= 0 (friction laws), monotone in phi
 //    (foundation laws), at random arguments of magnitudes dissipation_scales;
-//  - finite values and derivatives at extreme arguments (both signs of each magnitude, and zero).
+//  - finite values and derivatives at extreme arguments (both signs of each magnitude, and zero);
+//  - the limits a friction law's class has, along rays r = s d (d an axis or a diagonal, both signs) at
+//    pressures 0, 1 and the extremes, over the magnitudes s of extremes and dissipation_scales, from
+//    1e-300 to 1e150:
+//      dissipative laws: p(s d) . d >= 0 at every s, the extremes included;
+//      `monotone` laws: p(s d) . d non-decreasing in s (to round-off), and (p(a) - p(b)) . (a - b) >= 0 at
+//        random pairs;
+//      saturating laws (declared `bounded`, or |p| changing by less than saturation_tolerance between
+//        s = 1e3 and 1e6): no collapse, |p(s d)| >= (1 - saturation_tolerance) |p(1e3 d)| for s > 1e3 --
+//        what catches an (r / eps)^2 that overflows to inf and turns mu p into 0 at |r| = 1e150.
+//    Nothing is asked of a law of no class (e.g. a velocity-weakening law declares dissipative only).
+//    Scalar laws that are dissipative: p(r) r >= 0 at the extremes too.
 // Friction laws are checked in 2D and 3D. Away from kinks the derivative checks use central differences
 // at three steps (h, h / 10, h / 100), each also halved and Richardson-extrapolated, and keep the best
 // match, so that curvature or round-off does not fake a failure; a wrong derivative matches at none of
@@ -61,6 +72,10 @@ struct LawCheckOptions {
   double affine_tolerance = 1e-12;
   std::vector<double> dissipation_scales = {1e-3, 1, 1e3, 1e6};
   std::vector<double> extremes = {1e-300, 1e-12, 1e12, 1e150};
+  // Friction laws that saturate: beyond |r| = 1e3 the force may not fall below its value there by more
+  // than this (relative); a law saturates when it declares `bounded` or changes by less than this between
+  // |r| = 1e3 and 1e6.
+  double saturation_tolerance = 1e-6;
 };
 
 struct LawCheckReport {
@@ -372,6 +387,72 @@ inline std::vector<double> signed_extremes(const LawCheckOptions& options) {
   return values;
 }
 
+// A friction law along rays r = s d: the limits of its class (see the header). f maps (r, p_nu) to p_tau.
+template <class Law, class Map>
+void check_rays(const Map& f, int dim, const LawCheckOptions& options, LawCheckReport& report) {
+  constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
+  constexpr double kReference = 1e3, kFar = 1e6;  // where saturation is judged
+  std::vector<double> magnitudes = {kReference, kFar};
+  for (double e : options.extremes) magnitudes.push_back(std::abs(e));
+  for (double e : options.dissipation_scales) magnitudes.push_back(std::abs(e));
+  std::sort(magnitudes.begin(), magnitudes.end());
+  magnitudes.erase(std::unique(magnitudes.begin(), magnitudes.end()), magnitudes.end());
+  magnitudes.erase(std::remove(magnitudes.begin(), magnitudes.end(), 0.0), magnitudes.end());
+  std::vector<double> pressures = {0.0, 1.0};
+  for (double e : options.extremes) pressures.push_back(std::abs(e));
+  for (const double pressure : pressures)
+    for (const bool diagonal : {false, true})
+      for (const double sign : {1.0, -1.0}) {
+        Point direction{};  // unit length
+        for (int d = 0; d < dim; ++d)
+          direction[d] = diagonal ? sign * (d % 2 ? -1.0 : 1.0) / std::sqrt(double(dim)) : (d == 0 ? sign : 0.0);
+        const std::string ray = message(f.what, " along r = s ", format(direction.data(), dim), " at p_nu = ", pressure);
+        std::vector<double> along, size;  // p . d and |p| at each magnitude
+        for (double s : magnitudes) {
+          Point x{};
+          for (int d = 0; d < dim; ++d) x[d] = s * direction[d];
+          x[dim] = pressure;
+          const Values p = f.values(x);
+          double dot = 0, largest = 0, norm2 = 0;  // |p| scaled by its largest component: no overflow
+          for (int d = 0; d < dim; ++d) {
+            dot += p[d] * direction[d];
+            largest = std::max(largest, std::abs(p[d]));
+          }
+          for (int d = 0; d < dim && largest > 0; ++d) norm2 += (p[d] / largest) * (p[d] / largest);
+          along.push_back(dot);
+          size.push_back(largest > 0 ? largest * std::sqrt(norm2) : largest);
+        }
+        auto at = [&](double s) {
+          return size[std::find(magnitudes.begin(), magnitudes.end(), s) - magnitudes.begin()];
+        };
+        ++report.checks;
+        if constexpr (law_dissipative<Law>)
+          for (size_t j = 0; j < magnitudes.size(); ++j)
+            if (!(along[j] >= 0)) {
+              report.failures.push_back(message(ray, ": claims dissipative, but p . r = ", along[j] * magnitudes[j],
+                                                " at s = ", magnitudes[j]));
+              break;
+            }
+        if constexpr (law_monotone<Law>)
+          for (size_t j = 0; j + 1 < magnitudes.size(); ++j)
+            if (!(along[j + 1] >= along[j] - 8 * kEpsilon * std::max(size[j], size[j + 1]))) {
+              report.failures.push_back(message(ray, ": claims monotone, but p . d falls from ", along[j], " at s = ",
+                                                magnitudes[j], " to ", along[j + 1], " at s = ", magnitudes[j + 1]));
+              break;
+            }
+        const double reference = at(kReference);
+        const bool saturates =
+            law_bounded<Law> || std::abs(at(kFar) - reference) <= options.saturation_tolerance * reference;
+        if (saturates && reference > 0)
+          for (size_t j = 0; j < magnitudes.size(); ++j)
+            if (magnitudes[j] > kReference && !(size[j] >= (1 - options.saturation_tolerance) * reference)) {
+              report.failures.push_back(message(ray, ": saturates at |p| = ", reference, " (s = ", kReference,
+                                                "), but collapses to ", size[j], " at s = ", magnitudes[j]));
+              break;
+            }
+      }
+}
+
 }  // namespace law_check
 
 // A scalar law p(r) (normal laws): `template <class S> S operator()(const S& r) const`.
@@ -402,7 +483,16 @@ LawCheckReport check_scalar_law(const Law& law, const LawCheckOptions& options =
           report.failures.push_back(message(options.name, " claims dissipative, but p(", r, ") * ", r, " = ", p * r));
       }
   }
-  for (double r : signed_extremes(options)) check_finite(f, Point{r}, report);
+  for (double r : signed_extremes(options)) {
+    check_finite(f, Point{r}, report);
+    if constexpr (law_dissipative<Law>) {
+      const double p = f.values(Point{r})[0];
+      ++report.checks;
+      if (!(p * r >= 0))
+        report.failures.push_back(message(options.name, " claims dissipative, but p(", r, ") * ", r, " = ", p * r,
+                                          " at an extreme argument"));
+    }
+  }
   return report;
 }
 
@@ -481,6 +571,28 @@ LawCheckReport check_friction_law(const Law& law, const LawCheckOptions& options
       mixed[dim] = p;
       check_finite(f, mixed, report);
     }
+    if constexpr (law_monotone<Law>) {
+      for (double scale : options.dissipation_scales)
+        for (int s = 0; s < options.samples; ++s) {
+          Point a{}, b{};
+          for (int d = 0; d < dim; ++d) {
+            a[d] = scale * unit(rng);
+            b[d] = scale * unit(rng);
+          }
+          a[dim] = b[dim] = scale * std::abs(unit(rng));
+          const Values pa = f.values(a), pb = f.values(b);
+          double change = 0, size = 0;
+          for (int d = 0; d < dim; ++d) {
+            change += (pa[d] - pb[d]) * (a[d] - b[d]);
+            size += (std::abs(pa[d]) + std::abs(pb[d])) * std::abs(a[d] - b[d]);
+          }
+          ++report.checks;
+          if (!(change >= -8 * std::numeric_limits<double>::epsilon() * size))
+            report.failures.push_back(message(f.what, " claims monotone, but (p(a) - p(b)) . (a - b) = ", change,
+                                              " at a = ", format(a.data(), dim + 1), ", b = ", format(b.data(), dim + 1)));
+        }
+    }
+    check_rays<Law>(f, dim, options, report);
   }
   return report;
 }

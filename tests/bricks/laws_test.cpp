@@ -534,6 +534,63 @@ TEST(LawChecker, CatchesAWrongDerivativeAtAKink) {
   EXPECT_FALSE(check_scalar_law(ThreeHalvesWrongAtKink{}).ok());
 }
 
+// ---- friction laws at extreme arguments: the limits their class has -------------------------------------
+
+// Coulomb's law regularised as mu p r / sqrt(|r|^2 + eps^2) written naively in (r / eps)^2, which
+// overflows to inf at |r| = 1e150 for eps = 1e-6: the force collapses to 0 instead of mu p, and stays
+// finite.
+struct NaiveCoulomb {
+  double mu = 0.3, eps = 1e-6;
+  static constexpr bool dissipative = true;
+  static constexpr bool uses_normal_pressure = true;
+  template <class S>
+  void operator()(const S* r, int dim, const S& p, S* out) const {
+    using std::sqrt;
+    S sum = 1.0;
+    for (int i = 0; i < dim; ++i) sum += (r[i] / eps) * (r[i] / eps);
+    const S scale = 1.0 / sqrt(sum);
+    for (int i = 0; i < dim; ++i) out[i] = mu * p * (r[i] / eps) * scale;
+  }
+};
+// Friction that falls off at large speeds (mu p r / |r| for |r| < 1e6, then mu p 1e6 r / |r|^2): dissipative
+// but not monotone; declared monotone, it is caught.
+struct FallingFriction {
+  static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;
+  template <class S>
+  void operator()(const S* r, int dim, const S& /*p*/, S* out) const {
+    const double eps = 0.5;
+    scaled_direction(r, dim, [eps](const auto& rho) {
+      using T = std::decay_t<decltype(rho)>;
+      if (rho <= eps) return T(rho / eps);
+      if (rho <= 1e6) return T(1.0 + 0.0 * rho);
+      return T(1e6 / rho);
+    }, out);
+  }
+};
+
+TEST(LawChecker, CatchesAFrictionLawThatCollapsesAtLargeSpeeds) {
+  const LawCheckOptions options{.name = "naive Coulomb", .derivatives = false};
+  // Finite values at every extreme, but 0 instead of mu p at |r| = 1e150.
+  const double r[2] = {1e150, 0.0};
+  double out[2];
+  NaiveCoulomb{}(r, 2, 1.0, out);
+  EXPECT_EQ(out[0], 0.0);
+  const auto report = check_friction_law(NaiveCoulomb{}, options);
+  EXPECT_FALSE(report.ok()) << report;
+  std::ostringstream text;
+  text << report;
+  EXPECT_NE(text.str().find("collapses"), std::string::npos) << text.str();
+  // The library's Coulomb and Tresca laws at the same eps hold mu p and g up to 1e150.
+  const auto library = check_friction_law(RegularizedCoulomb{0.3, 1e-6}, options);
+  EXPECT_TRUE(library.ok()) << library;
+  const auto tresca = check_friction_law(RegularizedTresca{5.0, 1e-6}, options);
+  EXPECT_TRUE(tresca.ok()) << tresca;
+  // A law declared monotone must not fall off along a ray.
+  const auto falling = check_friction_law(FallingFriction{}, {.name = "falling", .derivatives = false});
+  EXPECT_FALSE(falling.ok()) << falling;
+}
+
 // What a user writes for a law of their own: the law and a five-line test.
 struct QuadraticResponse {
   static constexpr bool dissipative = true;
