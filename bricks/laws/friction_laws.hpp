@@ -4,28 +4,13 @@
 // the normal pressure p_nu = -sigma_nu >= 0 (paper (9), (13)). Every law has the signature
 //   template <class S> void operator()(const S* r, int dim, const S& normal_pressure, S* out) const;
 // templated on the scalar so that Dual gives the derivatives in r and in the pressure.
-#include <algorithm>
 #include <array>
-#include <cmath>
 
 #include "assembly/dual.hpp"
+#include "bricks/laws/direction.hpp"
 #include "bricks/laws/law_parameters.hpp"
 
 namespace pc {
-
-// out = r / sqrt(|r|^2 + eps^2), the slip direction smoothed over a velocity eps. The components are
-// scaled by s = max(|r_i|, eps) before squaring so that nothing overflows or underflows for |r| up to
-// 1e300 or eps down to 1e-300; s is a constant factor of an exact identity, so derivatives stay exact.
-template <class S>
-void regularized_direction(const S* r, int dim, double eps, S* out) {
-  using std::sqrt;
-  double s = eps;
-  for (int i = 0; i < dim; ++i) s = std::max(s, std::abs(value_of(r[i])));
-  S sum = (eps / s) * (eps / s);
-  for (int i = 0; i < dim; ++i) sum += (r[i] / s) * (r[i] / s);
-  const S inverse_norm = 1.0 / sqrt(sum);
-  for (int i = 0; i < dim; ++i) out[i] = (r[i] / s) * inverse_norm;
-}
 
 // p_tau(r) = c_tau r, paper (13).
 struct ViscousFriction {
@@ -33,6 +18,7 @@ struct ViscousFriction {
 
   static constexpr bool affine = true;
   static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;
   static constexpr bool symmetric = true;
   static constexpr bool uses_normal_pressure = false;
 
@@ -54,6 +40,8 @@ struct RegularizedCoulomb {
 
   static constexpr bool affine = false;
   static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;  // in r, at one pressure
+  static constexpr bool bounded = true;   // |p_tau| < mu |p_nu|
   static constexpr bool symmetric = true;  // in r; the pressure coupling is not, and the brick knows it
   static constexpr bool uses_normal_pressure = true;
 
@@ -80,6 +68,8 @@ struct RegularizedTresca {
 
   static constexpr bool affine = false;
   static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;
+  static constexpr bool bounded = true;  // |p_tau| < g
   static constexpr bool symmetric = true;
   static constexpr bool uses_normal_pressure = false;
 

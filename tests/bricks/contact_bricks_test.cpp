@@ -25,6 +25,7 @@
 #include "bricks/friction_brick.hpp"
 #include "bricks/law_registry.hpp"
 #include "bricks/laws/foundation_laws.hpp"
+#include "bricks/laws/direction.hpp"
 #include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/law_parameters.hpp"
 #include "bricks/laws/normal_laws.hpp"
@@ -419,6 +420,42 @@ TEST(FrictionBrick, TangentMatchesFiniteDifferences) {
     FrictionBrick<RegularizedTresca> tresca(c.side);
     expect_check_brick_passes(tresca, tresca_data, c);
     EXPECT_GT(residual_size(tresca, c, pressed, "v"), 0.0) << c.label;
+  }
+}
+
+// Coulomb friction saturated by tanh, a user's law with fixed values: p_tau = mu p tanh(|v_tau| / eps)
+// v_tau / |v_tau|. `pressure_slope` scales the derivative in the pressure (1: correct), to make a wrong
+// tangent in the columns of the normal velocity.
+struct TanhCoulomb {
+  double mu = 0.3, eps = 0.1, pressure_slope = 1.0;
+  static constexpr bool dissipative = true;
+  static constexpr bool uses_normal_pressure = true;
+  template <class S>
+  void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
+    const S p = chain_rule(normal_pressure, value_of(normal_pressure), pressure_slope);
+    const double e = eps;
+    scaled_direction(r, dim, [e](const auto& rho) { using std::tanh; return tanh(rho / e); }, out);
+    for (int i = 0; i < dim; ++i) out[i] *= mu * p;
+  }
+};
+
+TEST(FrictionBrick, SaturatedFrictionPassesAndAWrongTangentIsCaught) {
+  // |v_tau| >= 0.2 = 2 eps: the force is nearly saturated, its slope along v_tau small next to the
+  // force, so a finite difference of the residual at the default step is mostly round-off.
+  for (const ContactCase& c : contact_cases()) {
+    const ConstantTable data = constants_of(LinearDampedResponse{kCNu});
+    const auto normal = updated<NormalResponseBrick<LinearDampedResponse>>(data, c.side);
+    BrickCheckSetup setup = c.setup;
+    setup.ranges["v"] = {-1.0, -0.2};  // into the foundation, |v_tau| >= 0.2
+    FrictionBrick<TanhCoulomb> saturated(TanhCoulomb{}, c.side, normal);
+    const BrickCheckReport report = check_brick(saturated, data, setup);
+    EXPECT_TRUE(report.ok()) << c.label << ": " << report;
+    EXPECT_LT(report.max_tangent_error, 1e-7) << c.label << ": " << report;
+    // The same law with its pressure derivative 1% off: the columns of the normal velocity are wrong.
+    FrictionBrick<TanhCoulomb> wrong(TanhCoulomb{.pressure_slope = 1.01}, c.side, normal);
+    const BrickCheckReport caught = check_brick(wrong, data, setup);
+    EXPECT_FALSE(caught.ok()) << c.label << ": " << caught;
+    EXPECT_GT(caught.max_tangent_error, 5e-3) << c.label << ": " << caught;
   }
 }
 

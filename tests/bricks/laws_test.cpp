@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "assembly/dual.hpp"
@@ -17,6 +18,7 @@
 #include "assembly/parameters.hpp"
 #include "bricks/conductive_foundation_brick.hpp"
 #include "bricks/friction_brick.hpp"
+#include "bricks/laws/direction.hpp"
 #include "bricks/laws/foundation_laws.hpp"
 #include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/law_parameters.hpp"
@@ -66,16 +68,14 @@ TEST(Laws, PaperLawsPassTheChecker) {
 TEST(NormalLaws, PassTheChecker) {
   const auto stiff = check_scalar_law(LinearDampedResponse{1e16}, {.name = "stiff damped response"});
   EXPECT_TRUE(stiff.ok()) << stiff;
-  // r_+^m with 1 < m < 2 has an unbounded second derivative at 0, which no finite difference resolves:
-  // checked away from the kink only.
-  for (double m : {1.0, 2.0, 2.5, 3.0}) {
+  // r_+^m with 1 < m < 2 has an unbounded second derivative at 0: the kink is checked by right-sided
+  // quotients that converge as h^(m-1).
+  for (double m : {1.0, 1.5, 2.0, 2.5, 3.0}) {
     const auto report = check_scalar_law(
         PowerDampedResponse{1e12, m},
         {.name = message("PowerDampedResponse m = ", m), .extremes = {1e-300, 1e-12, 1e12, 1e90}});
     EXPECT_TRUE(report.ok()) << report;
   }
-  const auto fractional = check_scalar_law(PowerDampedResponse{1e12, 1.5}, {.name = "m = 1.5", .kinks = {}});
-  EXPECT_TRUE(fractional.ok()) << fractional;
   const auto compliance = check_scalar_law(NormalCompliance{1e9, 2.0, 0.1},
                                            {.name = "NormalCompliance", .kinks = {0.1}, .extremes = {1e-300, 1e140}});
   EXPECT_TRUE(compliance.ok()) << compliance;
@@ -144,6 +144,78 @@ TEST(FrictionLaws, ClosedForms) {
   RegularizedCoulomb{0.5, 1e-9}(v, 2, D::variable(0.0, 0), td);
   EXPECT_EQ(td[0].v, 0.0);
   EXPECT_NEAR(td[0].d[0], 0.5, 1e-12);
+}
+
+// ---- the direction term g(|r|) r / |r| ------------------------------------------------------------------
+
+template <int N>
+bool all_finite(const Dual<N>* x, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(x[i].v)) return false;
+    for (double d : x[i].d)
+      if (!std::isfinite(d)) return false;
+  }
+  return true;
+}
+
+TEST(Direction, ScaledDirectionIsSafeAtZeroTinyAndHuge) {
+  using D = Dual<3>;
+  const double eps = 0.1;
+  const auto tanh_of = [eps](const auto& rho) { using std::tanh; return tanh(rho / eps); };
+  for (const int dim : {2, 3}) {
+    // r = 0: the limit g'(0) r, with the derivative g'(0) I = I / eps.
+    D zero[3] = {D::variable(0.0, 0), D::variable(0.0, 1), D::variable(0.0, 2)};
+    D out[3];
+    scaled_direction(zero, dim, tanh_of, out);
+    ASSERT_TRUE(all_finite(out, dim)) << dim;
+    for (int i = 0; i < dim; ++i) {
+      EXPECT_EQ(out[i].v, 0.0);
+      for (int j = 0; j < dim; ++j) EXPECT_NEAR(out[i].d[j], i == j ? 1 / eps : 0.0, 1e-12 / eps) << i << j;
+    }
+    // |r| = 1e-300 (|r|^2 underflows): value g'(0) r, derivative I / eps.
+    D tiny[3] = {D::variable(1e-300, 0), D::variable(-1e-300, 1), D::variable(0.5e-300, 2)};
+    scaled_direction(tiny, dim, tanh_of, out);
+    ASSERT_TRUE(all_finite(out, dim)) << dim;
+    for (int i = 0; i < dim; ++i) {
+      EXPECT_NEAR(out[i].v, tiny[i].v / eps, 1e-12 * 1e-300 / eps);
+      for (int j = 0; j < dim; ++j) EXPECT_NEAR(out[i].d[j], i == j ? 1 / eps : 0.0, 1e-9 / eps) << i << j;
+    }
+    // |r| = 1e300 (|r|^2 overflows): the unit vector r / |r|, derivative (I - e e^T) / |r|.
+    D huge[3] = {D::variable(1e300, 0), D::variable(-1e300, 1), D::variable(2e300, 2)};
+    scaled_direction(huge, dim, tanh_of, out);
+    ASSERT_TRUE(all_finite(out, dim)) << dim;
+    const double norm = dim == 2 ? std::sqrt(2.0) * 1e300 : std::sqrt(6.0) * 1e300;
+    for (int i = 0; i < dim; ++i) {
+      EXPECT_NEAR(out[i].v, huge[i].v / norm, 1e-15);
+      for (int j = 0; j < dim; ++j) {
+        const double expected = ((i == j ? 1.0 : 0.0) - huge[i].v / norm * huge[j].v / norm) / norm;
+        EXPECT_NEAR(out[i].d[j], expected, 1e-12 / norm) << i << j;
+      }
+    }
+  }
+}
+
+TEST(Direction, RegularizedDirectionIsSafeAtZeroTinyAndHuge) {
+  using D = Dual<2>;
+  for (const double eps : {1e-200, 1e-6, 0.5}) {
+    D zero[2] = {D::variable(0.0, 0), D::variable(0.0, 1)}, out[2];
+    regularized_direction(zero, 2, eps, out);
+    ASSERT_TRUE(all_finite(out, 2)) << eps;
+    EXPECT_EQ(out[0].v, 0.0);
+    EXPECT_DOUBLE_EQ(out[0].d[0], 1 / eps);
+    EXPECT_EQ(out[0].d[1], 0.0);
+    D tiny[2] = {D::variable(1e-300, 0), D::variable(0.0, 1)};
+    regularized_direction(tiny, 2, eps, out);
+    ASSERT_TRUE(all_finite(out, 2)) << eps;
+    EXPECT_NEAR(out[0].v, 1e-300 / eps, 1e-12 * 1e-300 / eps);
+    EXPECT_NEAR(out[0].d[0], 1 / eps, 1e-9 / eps);
+    D huge[2] = {D::variable(1e300, 0), D::variable(-1e300, 1)};
+    regularized_direction(huge, 2, eps, out);
+    ASSERT_TRUE(all_finite(out, 2)) << eps;
+    EXPECT_NEAR(out[0].v, 1 / std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(out[1].v, -1 / std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(out[0].d[0], 0.5 / (std::sqrt(2.0) * 1e300), 1e-12 / 1e300);
+  }
 }
 
 // ---- foundation laws ----------------------------------------------------------------------------------
@@ -404,6 +476,119 @@ TEST(LawChecker, CatchesEachBrokenRule) {
   text << report;
   EXPECT_NE(text.str().find("detached"), std::string::npos) << text.str();
   EXPECT_NE(text.str().find("finite differences"), std::string::npos) << text.str();
+}
+
+// ---- derivatives at kinks: what holds there ---------------------------------------------------------
+
+// c r_+^1.5: C^1, with an unbounded second derivative at the kink r = 0, where difference quotients
+// converge to the derivative 0 only as h^0.5.
+struct ThreeHalvesResponse {
+  static constexpr bool dissipative = true;
+  template <class S>
+  S operator()(const S& r) const {
+    using std::pow;
+    return r < 0.0 ? S(0.0) : 2.0 * pow(r, 1.5);
+  }
+};
+// c r_+ reporting 1.01 c at the kink: a wrong right-sided derivative.
+struct KinkSlopeOff {
+  template <class S>
+  S operator()(const S& r) const {
+    if (r < 0.0) return S(0.0);
+    if (value_of(r) == 0.0) return chain_rule(r, 0.0, 1.01 * 3.0);
+    return 3.0 * r;
+  }
+};
+// c r_+^1.5 reporting the slope 1 at the kink instead of 0.
+struct ThreeHalvesWrongAtKink {
+  template <class S>
+  S operator()(const S& r) const {
+    using std::pow;
+    if (r < 0.0) return S(0.0);
+    if (value_of(r) == 0.0) return chain_rule(r, 0.0, 1.0);
+    return 2.0 * pow(r, 1.5);
+  }
+};
+
+TEST(LawChecker, AcceptsAC1LawWithAnUnboundedSecondDerivativeAtItsKink) {
+  // Default options: the kink at 0 is checked, by right-sided quotients converging as h^0.5.
+  const auto user = check_scalar_law(ThreeHalvesResponse{}, {.name = "2 r_+^1.5"});
+  EXPECT_TRUE(user.ok()) << user;
+  for (double m : {1.25, 1.5, 1.75}) {
+    const auto library = check_scalar_law(PowerDampedResponse{1e12, m}, {.name = message("PowerDampedResponse m = ", m),
+                                                                        .extremes = {1e-300, 1e-12, 1e12, 1e90}});
+    EXPECT_TRUE(library.ok()) << library;
+  }
+  const auto compliance = check_scalar_law(NormalCompliance{1e9, 1.5, 0.1},
+                                           {.name = "NormalCompliance m = 1.5", .kinks = {0.1}, .extremes = {1e-300, 1e140}});
+  EXPECT_TRUE(compliance.ok()) << compliance;
+}
+
+TEST(LawChecker, CatchesAWrongDerivativeAtAKink) {
+  const auto left = check_scalar_law(LeftSidedKink{}, {.name = "left-sided"});
+  EXPECT_FALSE(left.ok()) << left;
+  std::ostringstream text;
+  text << left;
+  EXPECT_NE(text.str().find("right-sided"), std::string::npos) << text.str();
+  EXPECT_FALSE(check_scalar_law(KinkSlopeOff{}).ok());
+  EXPECT_FALSE(check_scalar_law(ThreeHalvesWrongAtKink{}).ok());
+}
+
+// ---- friction laws at extreme arguments: the limits their class has -------------------------------------
+
+// Coulomb's law regularised as mu p r / sqrt(|r|^2 + eps^2) written naively in (r / eps)^2, which
+// overflows to inf at |r| = 1e150 for eps = 1e-6: the force collapses to 0 instead of mu p, and stays
+// finite.
+struct NaiveCoulomb {
+  double mu = 0.3, eps = 1e-6;
+  static constexpr bool dissipative = true;
+  static constexpr bool uses_normal_pressure = true;
+  template <class S>
+  void operator()(const S* r, int dim, const S& p, S* out) const {
+    using std::sqrt;
+    S sum = 1.0;
+    for (int i = 0; i < dim; ++i) sum += (r[i] / eps) * (r[i] / eps);
+    const S scale = 1.0 / sqrt(sum);
+    for (int i = 0; i < dim; ++i) out[i] = mu * p * (r[i] / eps) * scale;
+  }
+};
+// Friction that falls off at large speeds (mu p r / |r| for |r| < 1e6, then mu p 1e6 r / |r|^2): dissipative
+// but not monotone; declared monotone, it is caught.
+struct FallingFriction {
+  static constexpr bool dissipative = true;
+  static constexpr bool monotone = true;
+  template <class S>
+  void operator()(const S* r, int dim, const S& /*p*/, S* out) const {
+    const double eps = 0.5;
+    scaled_direction(r, dim, [eps](const auto& rho) {
+      using T = std::decay_t<decltype(rho)>;
+      if (rho <= eps) return T(rho / eps);
+      if (rho <= 1e6) return T(1.0 + 0.0 * rho);
+      return T(1e6 / rho);
+    }, out);
+  }
+};
+
+TEST(LawChecker, CatchesAFrictionLawThatCollapsesAtLargeSpeeds) {
+  const LawCheckOptions options{.name = "naive Coulomb", .derivatives = false};
+  // Finite values at every extreme, but 0 instead of mu p at |r| = 1e150.
+  const double r[2] = {1e150, 0.0};
+  double out[2];
+  NaiveCoulomb{}(r, 2, 1.0, out);
+  EXPECT_EQ(out[0], 0.0);
+  const auto report = check_friction_law(NaiveCoulomb{}, options);
+  EXPECT_FALSE(report.ok()) << report;
+  std::ostringstream text;
+  text << report;
+  EXPECT_NE(text.str().find("collapses"), std::string::npos) << text.str();
+  // The library's Coulomb and Tresca laws at the same eps hold mu p and g up to 1e150.
+  const auto library = check_friction_law(RegularizedCoulomb{0.3, 1e-6}, options);
+  EXPECT_TRUE(library.ok()) << library;
+  const auto tresca = check_friction_law(RegularizedTresca{5.0, 1e-6}, options);
+  EXPECT_TRUE(tresca.ok()) << tresca;
+  // A law declared monotone must not fall off along a ray.
+  const auto falling = check_friction_law(FallingFriction{}, {.name = "falling", .derivatives = false});
+  EXPECT_FALSE(falling.ok()) << falling;
 }
 
 // What a user writes for a law of their own: the law and a five-line test.
