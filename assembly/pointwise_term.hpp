@@ -12,6 +12,7 @@
 //     }
 //   };
 #include <array>
+#include <type_traits>
 #include <utility>
 
 #include "assembly/dual.hpp"

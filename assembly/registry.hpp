@@ -13,6 +13,7 @@
 // touches the registries.
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assembly/error.hpp"

@@ -238,8 +238,12 @@ int Model::add_brick(std::shared_ptr<Brick> brick) {
   check_brick(*brick);
   bricks_.push_back(std::move(brick));
   brick_states_.push_back(std::make_unique<BrickState>());
-  for (const std::string& name : bricks_.back()->data())
-    brick_states_.back()->constant_versions[name] = constants_.at(name).second;
+  for (const std::string& name : bricks_.back()->data()) {
+    const auto it = constants_.find(name);
+    require(it != constants_.end(), "Model: brick '", bricks_.back()->name(), "' reads the constant '", name,
+            "', which the model does not have (set it before adding the brick)");
+    brick_states_.back()->constant_versions[name] = it->second.second;
+  }
   return static_cast<int>(bricks_.size()) - 1;
 }
 
