@@ -1,5 +1,7 @@
 #include "bricks/law_registry.hpp"
 
+#include "bricks/brick_registry.hpp"
+
 namespace pc {
 
 Registry<NormalLawFactory>& normal_law_registry() {
@@ -14,6 +16,11 @@ Registry<PairedLawFactory>& friction_law_registry() {
 
 Registry<PairedLawFactory>& foundation_law_registry() {
   static Registry<PairedLawFactory> registry("foundation law", "foundation.<name>.type");
+  return registry;
+}
+
+Registry<BrickFactory>& brick_registry() {
+  static Registry<BrickFactory> registry("brick", "bricks[].type");
   return registry;
 }
 

@@ -1,6 +1,7 @@
 #include "models/piezo/piezo_contact_recipe.hpp"
 
 #include "assembly/error.hpp"
+#include "bricks/brick_registry.hpp"
 #include "bricks/dirichlet_brick.hpp"
 #include "bricks/elasticity_brick.hpp"
 #include "bricks/inertia_brick.hpp"
@@ -97,6 +98,7 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
     require(spec.foundation.name == "insulated", "foundation '", spec.foundation.name,
             "' needs a contact region (regions.contact)");
   }
+  for (const RegisteredBrick& b : spec.bricks) m.add_brick(choose(m, brick_registry(), b.brick).create(b.region));
   if (spec.extra_bricks) spec.extra_bricks(m);
   m.finalize();
   return built;

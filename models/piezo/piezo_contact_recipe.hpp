@@ -31,6 +31,11 @@ struct SurfaceLoad {
   LoadTime time = LoadTime::Varying;
 };
 
+struct RegisteredBrick {
+  Choice brick;
+  std::string region;
+};
+
 struct PiezoContactSpec {
   std::shared_ptr<const Mesh> mesh;
   int order = 1;
@@ -51,6 +56,9 @@ struct PiezoContactSpec {
   Choice foundation{"insulated", {}};
   double slip_threshold = 0;          // |v_tau| above which a contact node counts as sliding
   Choice scheme{"backward_euler", {}};  // a registered time scheme: backward_euler | bdf2 | theta
+  // Registered bricks (bricks/brick_registry.hpp) to add over their regions, their parameters written into
+  // the model's constants.
+  std::vector<RegisteredBrick> bricks;
   // Called after the recipe's bricks and before finalize(): a user's own bricks (e.g. a new law).
   std::function<void(Model&)> extra_bricks;
 };

@@ -2,6 +2,7 @@
 
 #include "assembly/error.hpp"
 #include "assembly/linear_solver.hpp"
+#include "bricks/brick_registry.hpp"
 #include "bricks/law_registry.hpp"
 #include "bricks/piezo_materials.hpp"
 #include "models/solvers/condensed_solve.hpp"
@@ -36,7 +37,8 @@ std::string table_cell(const std::string& text) {
 std::vector<CatalogSection> registry_catalog() {
   return {section(piezo_material_registry(), "material"),
           section(normal_law_registry(), "contact"), section(friction_law_registry(), "contact"),
-          section(foundation_law_registry(), "foundation.<name>"), section(time_scheme_registry(), "time"),
+          section(foundation_law_registry(), "foundation.<name>"), section(brick_registry(), "bricks[]"),
+          section(time_scheme_registry(), "time"),
           section(linear_solver_registry(), "solver"), section(condensation_registry(), "solver")};
 }
 

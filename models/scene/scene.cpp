@@ -9,6 +9,7 @@
 #include "assembly/gmsh_import.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "assembly/point_locator.hpp"
+#include "bricks/brick_registry.hpp"
 #include "bricks/law_registry.hpp"
 #include "bricks/piezo_materials.hpp"
 #include "bricks/voigt.hpp"
@@ -161,7 +162,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
   }).value_or("unnamed");
   problems.check_void([&] {
     require_known_keys(json, {"name", "about", "plugins", "mesh", "regions", "material", "contact", "foundation", "loads",
-                              "time", "solver", "output"});
+                              "bricks", "time", "solver", "output"});
   });
   // Plugins first: the laws they register are names the rest of the scene may use.
   if (const auto plugins = json.find("plugins")) {
@@ -349,6 +350,23 @@ Scene load_scene(const Json& json, const std::string& directory) {
     }
     require(f.size() > 0, "scene: 'foundation' lists no foundation to run");
   });
+
+  // Registered bricks beyond the recipe's, each over a region of the mesh.
+  if (const auto bricks = json.find("bricks")) {
+    problems.check_void([&] {
+      for (const Json& item : bricks->as_array()) {
+        problems.check_void([&] {
+          const auto& entry = chosen_entry(item, "type", brick_registry());
+          const ChosenEntry chosen{"brick type '" + entry.name + "'", &entry.parameters};
+          require_read_keys(item, {"type", "region"}, {chosen}, {registered_parameters("brick type", brick_registry())});
+          const std::string region = item.at("region").as_string();
+          if (spec.mesh) require(spec.mesh->has_region(region), "scene: '", item.path(), ".region' names region '",
+                                 region, "', which the mesh lacks");
+          spec.bricks.push_back({{entry.name, read_parameters(item, chosen)}, region});
+        });
+      }
+    });
+  }
 
   problems.check_void([&] {
     const Json& t = json.at("time");

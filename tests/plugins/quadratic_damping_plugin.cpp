@@ -1,7 +1,10 @@
-// A plugin as a user writes one: a normal law that is not built in, registered with its parameters.
+// A plugin as a user writes one: a normal law that is not built in, registered with its parameters, and a
+// whole brick (the library's dashpot over the plugin's own constant).
 // Built by piezocontact_add_plugin() (tests/CMakeLists.txt); loaded by the scenes of plugins_test.cpp.
 #include <array>
 
+#include "bricks/boundary_dashpot_brick.hpp"
+#include "bricks/brick_registry.hpp"
 #include "bricks/law_registry.hpp"
 #include "bricks/laws/normal_laws.hpp"
 
@@ -24,3 +27,8 @@ struct QuadraticDamping {
 }  // namespace
 
 PC_REGISTER_NORMAL_LAW(QuadraticDamping, "quadratic_damped", "p_nu = c_nu max(v_nu, 0)^2 (a test plugin's law)")
+PC_REGISTER_BRICK("plugin_dashpot", "c_plugin v . w on a face region (a test plugin's brick)",
+                  {{"c_plugin", "Pa s/m", "dashpot coefficient", std::nullopt, pc::Range::at_least(0)}},
+                  [](const std::string& region) -> std::shared_ptr<pc::Brick> {
+                    return std::make_shared<pc::BoundaryDashpotBrick>(region, "c_plugin");
+                  })

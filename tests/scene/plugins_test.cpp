@@ -59,6 +59,19 @@ TEST(Plugins, ALawOfAPluginIsNamedCheckedListedAndRunLikeABuiltInOne) {
   ASSERT_TRUE(r.completed) << r.message;
   EXPECT_GT(r.max_abs_ux, 0.0);
 
+  // A plugin's brick too: the scene adds it over a region, its parameter a model constant.
+  const Scene with_brick = scene_with_plugins(
+      "[\"" + path + "\"]", {"bricks=[{\"type\": \"plugin_dashpot\", \"region\": \"right\", \"c_plugin\": 1e3}]"});
+  PiezoContactSpec spec = with_brick.spec;
+  const PiezoContactModel built = build_piezo_contact_model(spec);
+  bool found = false;
+  for (const auto& b : built.model->bricks()) found = found || b->name() == "boundary dashpot (c_plugin) on right";
+  EXPECT_TRUE(found);
+  EXPECT_EQ(built.model->scalar("c_plugin"), 1e3);
+  EXPECT_CONTAINS(error_of([&] { scene_with_plugins("[\"" + path + "\"]",
+                                                    {"bricks=[{\"type\": \"plugin_dashpot\", \"region\": \"right\"}]"}); }),
+                  "'bricks[0].c_plugin' is required by brick type 'plugin_dashpot'");
+
   // Loading the same file again (another scene naming it) is a no-op.
   EXPECT_NO_THROW(load_plugin(path));
   EXPECT_EQ(std::count(loaded_plugins().begin(), loaded_plugins().end(), std::filesystem::canonical(path).string()), 1);

@@ -46,6 +46,7 @@ TEST(Registry, EveryNameAScenesGivesIsRegistered) {
                            "normal laws (contact.law_normal): linear_damped normal_compliance power_damped",
                            "friction laws (contact.law_tangential): coulomb none tresca viscous",
                            "foundation laws (foundation.<name>.type): conductive insulated pressure_activated",
+                           "bricks (bricks[].type): boundary_dashpot",
                            "time schemes (time.scheme): backward_euler bdf2 theta",
                            "linear solvers (solver.linear): cholmod eigen-lu mumps umfpack",
                            "condensations (solver.condensation): columns schur"})
