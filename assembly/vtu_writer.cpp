@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -248,6 +249,17 @@ std::vector<double> VtuWriter::at_quadratic_points(const PointArray& array) cons
       }
   }
   return values;
+}
+
+std::string VtuWriter::non_finite_array() const {
+  auto finite = [](const Array& a) {
+    return std::all_of(a.values.begin(), a.values.end(), [](double v) { return std::isfinite(v); });
+  };
+  for (const PointArray& a : point_data_)
+    if (!finite(a)) return a.name;
+  for (const Array& a : cell_data_)
+    if (!finite(a)) return a.name;
+  return "";
 }
 
 void VtuWriter::write(const std::string& path) const {

@@ -28,6 +28,10 @@ class VtuWriter {
   // Cell data: num_cells * components values.
   void add_cell_data(const std::string& name, int components, std::vector<double> values);
 
+  // The name of the first array holding a value that is not finite (inf or NaN), or "" if every value is
+  // finite: a caller that must never write a non-finite result checks this before write().
+  std::string non_finite_array() const;
+
   // Writes the file (the directory must exist); throws naming the path if it cannot.
   void write(const std::string& path) const;
 

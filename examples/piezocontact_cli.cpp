@@ -11,6 +11,8 @@
 // --plugin loads a plugin first (a scene loads those it names in "plugins").
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -87,7 +89,13 @@ int main(int argc, char** argv) {
       }
       return argv[++i];
     };
-    if (arg == "--out") options.output_directory = value();
+    if (arg == "--out") {
+      options.output_directory = value();
+      if (options.output_directory.empty()) {
+        std::fprintf(stderr, "error: --out is empty: name the directory to write the results into\n");
+        return 1;
+      }
+    }
     else if (arg == "--set") overrides.push_back(value());
     else if (arg == "--only") options.only.push_back(value());
     else if (arg == "--no-sweep") options.sweep = false;
@@ -113,6 +121,17 @@ int main(int argc, char** argv) {
     }
     return pc::run_scene(scene, options) ? 0 : 1;
   } catch (const pc::Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Whatever the runner did not turn into a pc::Error: a clear message and exit 1, never an abort.
+    std::fprintf(stderr, "error: writing the results into --out '%s' failed: %s\n", options.output_directory.c_str(),
+                 e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "error: out of memory (std::bad_alloc): the scene needs more memory than the machine has\n");
+    return 1;
+  } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   }

@@ -142,6 +142,9 @@ void require_file_name(const Json& at, const std::string& name) {
           "(letters, digits, _ - ., not starting with a dot): it names output files");
 }
 
+// The most points an output grid may have, in all (1e7: a grid.csv of about 1 GB).
+constexpr double kMaxGridPoints = 1e7;
+
 // Every point must lie in the mesh (within round-off of its boundary): a probe outside it has no value.
 void require_points_in_mesh(const PointLocator& locator, const Json& at, const std::vector<std::array<double, 3>>& points) {
   for (const auto& x : points)
@@ -184,6 +187,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
 
   problems.check_void([&] { spec.mesh = build_mesh(json.at("mesh"), directory, scene); });
   problems.check_void([&] {
+    if (!json.contains("mesh")) return;  // reported once, by the mesh's own check above
     spec.order = json.at("mesh").at("order").as_int();
     require(spec.order == 1 || spec.order == 2, "scene: 'mesh.order' must be 1 or 2, got ", spec.order);
   });
@@ -424,8 +428,14 @@ Scene load_scene(const Json& json, const std::string& directory) {
     if (const auto g = o->find("grid")) {
       require_known_keys(*g, {"x", "y"});
       const auto x = g->at("x").as_vector(3), y = g->at("y").as_vector(3);
-      require(x[2] >= 1 && y[2] >= 1 && x[2] == std::floor(x[2]) && y[2] == std::floor(y[2]), "scene: '", g->path(),
-              "': the third entry of x and y is a number of points (>= 1)");
+      // A count that cannot be (not an integer, < 1, or more points than a table can sensibly hold) is
+      // refused here, naming the key and the value, not turned into an int that overflows to no grid.
+      for (const auto& [axis, v] : {std::pair{"x", x}, std::pair{"y", y}})
+        require(std::isfinite(v[2]) && v[2] >= 1 && v[2] <= kMaxGridPoints && v[2] == std::floor(v[2]), "scene: '",
+                g->path(), ".", axis, "[2]' = ", v[2], ": the third entry is a number of points, an integer in [1, ",
+                kMaxGridPoints, "]");
+      require(x[2] * y[2] <= kMaxGridPoints, "scene: '", g->path(), "': ", x[2], " x ", y[2], " = ", x[2] * y[2],
+              " points, more than the limit of ", kMaxGridPoints);
       out.grid = {x[0], x[1], y[0], y[1], int(x[2]), int(y[2])};
     }
     if (const auto x = o->find("slip_threshold")) out.slip_threshold = x->as_number_at_least(0);

@@ -1,12 +1,19 @@
 #include "models/scene/scene_runner.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include "assembly/atomic_file.hpp"
 #include "assembly/error.hpp"
@@ -56,6 +63,28 @@ std::string eta(double elapsed, double done_fraction) {
   return left < 90 ? message(int(left + 0.5), " s") : message(int(left / 60 + 0.5), " min");
 }
 
+// No non-finite number is ever written as a result: a table with one is refused, naming the file, the
+// column and the row, and the run stops there (the caller turns the error into its stop message).
+void require_finite_rows(const std::string& what, const std::vector<std::string>& columns,
+                         const std::vector<std::vector<double>>& rows) {
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t c = 0; c < rows[i].size(); ++c)
+      require(std::isfinite(rows[i][c]), what, ": ", columns[c], " in row ", i + 1, " is not finite (",
+              std::isnan(rows[i][c]) ? "not a number" : "it overflowed", "); nothing non-finite is written");
+}
+
+void write_finite_csv(const std::string& path, const std::vector<std::string>& columns,
+                      const std::vector<std::vector<double>>& rows) {
+  require_finite_rows(std::filesystem::path(path).filename().string(), columns, rows);
+  write_csv(path, columns, rows);
+}
+
+// The model's unknowns must all be finite (the first non-finite one is named).
+void require_finite_state(const Model& m, const std::string& when) {
+  for (const std::string& u : m.unknowns())
+    require(m.values(u).allFinite(), when, ": the unknown '", u, "' is not finite");
+}
+
 void write_final_tables(const Scene& scene, const PiezoContactModel& built, const PointLocator& locator,
                         const std::string& dir, FoundationRunResult& r) {
   const Model& m = *built.model;
@@ -93,7 +122,7 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
     std::vector<std::string> columns = dim == 2 ? std::vector<std::string>{"x", "ux", "uy", "vx", "vy", "phi", "contact_pressure"}
                                                 : std::vector<std::string>{"x", "z", "ux", "uy", "uz", "vx", "vy", "vz", "phi",
                                                                            "contact_pressure"};
-    if (!dir.empty()) write_csv(dir + "/gamma_c.csv", columns, rows);
+    if (!dir.empty()) write_finite_csv(dir + "/gamma_c.csv", columns, rows);
   }
   if (dir.empty()) return;
 
@@ -103,7 +132,7 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
     for (const std::array<double, 3>& x : scene.output.grid.points())
       rows.push_back({x[0], x[1], at("u", 0, x), at("u", 1, x), at("v", 0, x), at("v", 1, x),
                       electric ? at("phi", 0, x) : 0.0});
-    write_csv(dir + "/grid.csv", {"x", "y", "ux", "uy", "vx", "vy", "phi"}, rows);
+    write_finite_csv(dir + "/grid.csv", {"x", "y", "ux", "uy", "vx", "vy", "phi"}, rows);
   }
 
   // The final state on the mesh, for the figures (2D).
@@ -114,7 +143,7 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
     node_rows.push_back({double(n), x[0], x[1], at("u", 0, x), at("u", 1, x), at("v", 0, x), at("v", 1, x),
                          electric ? at("phi", 0, x) : 0.0});
   }
-  write_csv(dir + "/final_nodes.csv", {"node", "x", "y", "ux", "uy", "vx", "vy", "phi"}, node_rows);
+  write_finite_csv(dir + "/final_nodes.csv", {"node", "x", "y", "ux", "uy", "vx", "vy", "phi"}, node_rows);
   const std::vector<double> stress = cell_stress(m);
   const int voigt = 3;
   std::vector<std::vector<double>> cell_rows;
@@ -127,8 +156,18 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
     cell_rows.push_back({double(nodes[0]), double(nodes[1]), double(nodes[2]), vm, phi_mean});
     if (nodes.size() == 4) cell_rows.push_back({double(nodes[0]), double(nodes[2]), double(nodes[3]), vm, phi_mean});
   }
-  write_csv(dir + "/final_cells.csv", {"n0", "n1", "n2", "von_mises", "phi_mean"}, cell_rows);
+  write_finite_csv(dir + "/final_cells.csv", {"n0", "n1", "n2", "von_mises", "phi_mean"}, cell_rows);
 }
+
+// The result's numbers by name, as summary.json holds them.
+std::vector<std::pair<const char*, double>> result_numbers(const FoundationRunResult& r) {
+  return {{"max_abs_ux", r.max_abs_ux}, {"max_abs_uy", r.max_abs_uy}, {"phi_min", r.phi_min},
+          {"phi_max", r.phi_max},       {"ux_corner", r.ux_corner},   {"uy_corner", r.uy_corner},
+          {"phi_center", r.phi_center}, {"max_abs_vtau_contact", r.max_abs_vtau_contact}};
+}
+
+// A number of the summary, or null when it is not finite (JSON has no NaN; the run is then not completed).
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 void write_summary(const Scene& scene, const std::string& dir, const FoundationRunResult& r, int steps) {
   Json s = Json::object();
@@ -144,14 +183,7 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   s.set("newton_iterations_total", Json(double(r.newton_iterations_total)));
   s.set("newton_iterations_max_per_step", Json(double(r.newton_iterations_max_per_step)));
   s.set("wall_s_total", Json(r.wall_seconds));
-  s.set("max_abs_ux", Json(r.max_abs_ux));
-  s.set("max_abs_uy", Json(r.max_abs_uy));
-  s.set("phi_min", Json(r.phi_min));
-  s.set("phi_max", Json(r.phi_max));
-  s.set("ux_corner", Json(r.ux_corner));
-  s.set("uy_corner", Json(r.uy_corner));
-  s.set("phi_center", Json(r.phi_center));
-  s.set("max_abs_vtau_contact", Json(r.max_abs_vtau_contact));
+  for (const auto& [name, value] : result_numbers(r)) s.set(name, finite_or_null(value));
   s.set("n_contact_nodes", Json(double(r.n_contact_nodes)));
   s.set("n_slip_nodes", Json(double(r.n_slip_nodes)));
   s.set("slip_threshold", Json(scene.output.slip_threshold));
@@ -218,7 +250,10 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
   std::unique_ptr<CsvLog> history;
   std::unique_ptr<ResultSeries> series;
   if (!dir.empty()) {
-    std::filesystem::create_directories(dir);
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    require(!error && std::filesystem::is_directory(dir), "cannot create the output directory '", dir, "' (--out): ",
+            error ? error.message() : "a file of that name is in the way");
     history = std::make_unique<CsvLog>(dir + "/history.csv",
                                        std::vector<std::string>{"t", "uy_corner", "phi_center", "newton_iterations"});
     series = std::make_unique<ResultSeries>(dir, scene.name);
@@ -232,12 +267,22 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     result.condensation_seconds += newton.condensation_seconds;
     result.factorizations += newton.factorizations;
   };
+  // What the run has done, for its summary if a callback stops it (a non-finite result).
+  RunSummary done;
+  auto when = [](const StepRecord& r) {
+    return r.step == 0 ? message("the initial state (t = ", r.time, ")") : message("step ", r.step, " (t = ", r.time, ")");
+  };
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
     add_phases(r.newton);
-    if (history)
-      history->row({r.time, probe(model, locator, "u", 1, scene.output.corner),
-                    electric ? probe(model, locator, "phi", 0, scene.output.center) : 0.0,
-                    double(r.newton.iterations)});
+    done.steps = r.step;
+    done.newton_iterations_total += r.newton.iterations;
+    done.newton_iterations_max_per_step = std::max(done.newton_iterations_max_per_step, r.newton.iterations);
+    require_finite_state(model, when(r));
+    const std::vector<double> row = {r.time, probe(model, locator, "u", 1, scene.output.corner),
+                                     electric ? probe(model, locator, "phi", 0, scene.output.center) : 0.0,
+                                     double(r.newton.iterations)};
+    require_finite_rows(when(r) + ": history.csv", {"t", "uy_corner", "phi_center", "newton_iterations"}, {row});
+    if (history) history->row(row);
     if (progress && (r.step % scene.output.progress_every == 0 || r.step == 1)) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::string residuals;
@@ -257,19 +302,33 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
   };
   callbacks.on_output = [&](const Model& model, const StepRecord& r) {
     if (r.step == 0) add_phases(r.newton);  // the initial potential's solve (empty without a potential)
+    require_finite_state(model, when(r));
     if (!series) return;
     VtuWriter writer(mesh);
     add_piezo_output(writer, model);
     writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
+    const std::string bad = writer.non_finite_array();
+    require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
     series->write(r.step, r.time, writer);
   };
 
-  const RunSummary run = Stepper(options).run(m, *built.scheme, newton, callbacks);
-  result.completed = run.completed;
-  result.steps = run.steps;
-  result.newton_iterations_total = run.newton_iterations_total;
-  result.newton_iterations_max_per_step = run.newton_iterations_max_per_step;
-  result.message = run.message;
+  // A non-finite state or result stops the run where it first appears, with a message saying where.
+  bool stopped_in_callback = false;
+  try {
+    const RunSummary run = Stepper(options).run(m, *built.scheme, newton, callbacks);
+    result.completed = run.completed;
+    result.steps = run.steps;
+    result.newton_iterations_total = run.newton_iterations_total;
+    result.newton_iterations_max_per_step = run.newton_iterations_max_per_step;
+    result.message = run.message;
+  } catch (const Error& e) {
+    stopped_in_callback = true;
+    result.completed = false;
+    result.steps = done.steps;
+    result.newton_iterations_total = done.newton_iterations_total;
+    result.newton_iterations_max_per_step = done.newton_iterations_max_per_step;
+    result.message = e.what();
+  }
 
   const Eigen::VectorXd& u = m.values("u");
   for (int s = 0; s < vspace.num_scalar_dofs(); ++s) {
@@ -288,21 +347,93 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     result.n_slip_nodes = int(diagnostics.at("contact_nodes_in_slip"));
     result.n_contact_nodes = int(diagnostics.at("contact_nodes_in_compression"));
   }
-  write_final_tables(scene, built, locator, dir, result);
+  // The final tables hold the final state, unless that is where a non-finite value appeared.
+  if (!stopped_in_callback) {
+    try {
+      write_final_tables(scene, built, locator, dir, result);
+    } catch (const Error& e) {
+      if (std::string(e.what()).find("not finite") == std::string::npos) throw;
+      result.completed = false;
+      result.message += (result.message.empty() ? "" : "; ") + message("stopped at the final tables: ", e.what());
+    }
+  }
+  for (const auto& [name, value] : result_numbers(result))
+    if (!std::isfinite(value) && result.completed) {
+      result.completed = false;
+      result.message += (result.message.empty() ? "" : "; ") + message("the result ", name, " is not finite");
+    }
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!dir.empty()) write_summary(scene, dir, result, steps);
   return result;
 }
 
+OutputDirectoryLock::OutputDirectoryLock(const std::string& directory) {
+  namespace fs = std::filesystem;
+  require(!directory.empty(), "the output directory (--out) is empty: name the directory to write the results into");
+  std::error_code error;
+  if (fs::exists(directory, error)) {
+    require(fs::is_directory(directory, error), "the output directory (--out) '", directory,
+            "' exists and is not a directory");
+  } else {
+    fs::create_directories(directory, error);
+    require(!error, "cannot create the output directory (--out) '", directory, "': ", error.message());
+  }
+  const std::string lock = (fs::path(directory) / ".piezocontact.lock").string();
+  fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  require(fd_ >= 0, "the output directory (--out) '", directory, "' is not writable: cannot create '", lock, "': ",
+          std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int reason = errno;
+    std::string owner;
+    std::ifstream in(lock);
+    std::getline(in, owner);
+    ::close(fd_);
+    fd_ = -1;
+    require(reason != EWOULDBLOCK, "the output directory (--out) '", directory, "' is in use by another run (pid ",
+            owner.empty() ? "unknown" : owner, "); wait for it to end or choose another --out");
+    fail("cannot lock the output directory (--out) '", directory, "' (", lock, "): ", std::strerror(reason));
+  }
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  const bool written = ::ftruncate(fd_, 0) == 0 && ::write(fd_, pid.data(), pid.size()) == ssize_t(pid.size());
+  // The lock file alone does not show that results can be written (it may be left from an earlier run):
+  // a file is created and removed in the directory, before any step is computed.
+  const std::string probe_file = (fs::path(directory) / (".piezocontact.write_test." + std::to_string(::getpid()))).string();
+  const int probe_fd = ::open(probe_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int probe_errno = errno;
+  if (probe_fd >= 0) {
+    ::close(probe_fd);
+    ::unlink(probe_file.c_str());
+  }
+  if (!written || probe_fd < 0) {
+    ::close(fd_);
+    fd_ = -1;
+    fail("the output directory (--out) '", directory, "' is not writable: ",
+         probe_fd < 0 ? std::strerror(probe_errno) : "cannot write the lock file");
+  }
+}
+
+OutputDirectoryLock::~OutputDirectoryLock() {
+  if (fd_ >= 0) ::close(fd_);  // releases the lock; the file stays, so that no run locks an unlinked one
+}
+
 bool run_scene(const Scene& scene, const SceneRunOptions& options) {
   bool all_completed = true;
   const std::string& out = options.output_directory;
+  // Before the first step: a directory that cannot be written or is in use costs no computing.
+  std::unique_ptr<OutputDirectoryLock> lock;
+  if (!out.empty()) lock = std::make_unique<OutputDirectoryLock>(out);
   for (const SceneFoundation& f : scene.foundations) {
     if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), f.name) == options.only.end())
       continue;
     if (options.progress) std::printf("%s, %s foundation: %s\n", scene.name.c_str(), f.name.c_str(), scene.mesh_description.c_str());
     const FoundationRunResult r = run_foundation(scene, f, out.empty() ? "" : out + "/" + f.name, options.progress);
     all_completed = all_completed && r.completed;
+    // The stop reason goes to stderr whatever --quiet says: a failed run is never silent.
+    if (!r.completed) {
+      std::fflush(stdout);
+      std::fprintf(stderr, "%s, %s foundation: STOPPED after %d steps: %s\n", scene.name.c_str(), f.name.c_str(),
+                   r.steps, r.message.empty() ? "(no message)" : r.message.c_str());
+    }
     if (options.progress)
       std::printf("  %s: %s in %.2f s, %d Newton iterations (max %d per step); max|ux| = %.4g m, max|uy| = %.4g m, "
                   "phi in [%.4g, %.4g] V%s\n",
@@ -323,10 +454,12 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
       sweep.model().set_constant("phi_f", phi_f);
       const FoundationRunResult r = sweep.run("", false, scene.output.sweep_steps);
       all_completed = all_completed && r.completed;
+      if (!r.completed)
+        std::fprintf(stderr, "%s, sweep phi_f = %g V: STOPPED: %s\n", scene.name.c_str(), phi_f, r.message.c_str());
       rows.push_back({phi_f, r.max_abs_ux, r.max_abs_uy, r.ux_corner, r.uy_corner});
       if (options.progress)
         std::printf("  sweep phi_f = %g V: max|ux| = %.4g m, max|uy| = %.4g m\n", phi_f, r.max_abs_ux, r.max_abs_uy);
-      write_csv(out + "/sweep_phi_f.csv", {"phi_f", "max_abs_ux", "max_abs_uy", "ux_corner", "uy_corner"}, rows);
+      write_finite_csv(out + "/sweep_phi_f.csv", {"phi_f", "max_abs_ux", "max_abs_uy", "ux_corner", "uy_corner"}, rows);
     }
   }
   return all_completed;

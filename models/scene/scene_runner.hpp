@@ -60,7 +60,26 @@ class FoundationRun {
 FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& directory,
                                    bool progress, int steps_override = 0);
 
-// Runs the scene as SceneRunOptions say; returns false if a run did not complete.
+// A run's output folder, owned for the run's duration. The constructor creates the directory (and its
+// parents), checks that it is a directory this process can write into, and takes an exclusive lock,
+// flock(2) on <directory>/.piezocontact.lock, which holds the owner's pid; the lock is released by the
+// destructor or when the process exits, however it exits. Every failure is a pc::Error naming the path
+// and "--out": not a directory, not writable, or "in use by another run (pid N)". An empty path is refused.
+class OutputDirectoryLock {
+ public:
+  explicit OutputDirectoryLock(const std::string& directory);
+  ~OutputDirectoryLock();
+  OutputDirectoryLock(const OutputDirectoryLock&) = delete;
+  OutputDirectoryLock& operator=(const OutputDirectoryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+// Runs the scene as SceneRunOptions say; returns false if a run did not complete. A non-empty output
+// directory is locked (OutputDirectoryLock) before the first step. A run whose state or results become
+// non-finite stops there: nothing non-finite is written, and its summary.json says completed = false
+// with the message. The reason a run stopped is printed on stderr whatever options.progress says.
 bool run_scene(const Scene& scene, const SceneRunOptions& options);
 
 }  // namespace pc

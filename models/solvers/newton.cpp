@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "assembly/error.hpp"
 
@@ -16,6 +17,14 @@ std::vector<double> block_norms(const std::vector<ProblemBlock>& blocks, const E
   std::vector<double> norms;
   for (const ProblemBlock& b : blocks) norms.push_back(x.segment(b.begin, b.size).norm());
   return norms;
+}
+
+// The first block whose norm is not finite (an entry is inf or NaN, or the norm overflows), or -1. A norm
+// that overflows is no measure of convergence: every comparison with it would be meaningless.
+int non_finite_block(const std::vector<double>& norms) {
+  for (size_t b = 0; b < norms.size(); ++b)
+    if (!std::isfinite(norms[b])) return int(b);
+  return -1;
 }
 
 double merit(const std::vector<double>& norms, const std::vector<double>& reference) {
@@ -118,7 +127,18 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
       if (r[b] > std::max(absolute[b], options_.relative_tolerance * reference[b])) return false;
     return true;
   };
-  if (!problem.residual().allFinite()) return finish(NewtonOutcome::Diverged, "the initial residual is not finite");
+  // Convergence is never declared on a non-finite residual, increment or iterate: each is Diverged,
+  // naming the block.
+  auto not_finite = [&](const std::vector<double>& block_values, const std::string& what) -> std::optional<NewtonReport> {
+    const int b = non_finite_block(block_values);
+    if (b < 0) return std::nullopt;
+    return finish(NewtonOutcome::Diverged, message(what, " of block '", report.blocks[b], "' is not finite (",
+                                                   std::isnan(block_values[b]) ? "its norm is not a number"
+                                                                               : "its norm overflows", ")"));
+  };
+  if (auto r = not_finite(norms, "the initial residual")) return *r;
+  if (auto r = not_finite(block_norms(blocks, problem.free_values()), "the initial iterate")) return *r;
+  if (auto r = not_finite(scales, "the size of the terms summed in the initial residual")) return *r;
   if (residual_converged(norms) || problem.residual().size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
   const double merit0 = merit(norms, reference);
   const double divergence_bound = options_.divergence_factor * std::max(merit0, 1.0);
@@ -146,7 +166,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     } catch (const Error& e) {
       return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": ", e.what()));
     }
-    if (!dx.allFinite()) return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": the Newton step is not finite"));
+    if (auto r = not_finite(block_norms(blocks, dx), message("iteration ", iteration, ": the Newton increment"))) return *r;
 
     // Armijo backtracking on the scaled residual (classical mode, or after a watchdog restart); otherwise
     // the full step, unless it leaves the finite, non-divergent range.
@@ -172,10 +192,10 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     const std::vector<double> steps = block_norms(blocks, alpha * dx);
     report.history.push_back({norms, steps, alpha, backtracks, restarted});
 
-    if (!problem.residual().allFinite())
-      return finish(NewtonOutcome::Diverged, message("iteration ", iteration, ": the residual is not finite"));
-    if (residual_converged(norms)) return finish(NewtonOutcome::Converged, "residual tolerance met");
+    if (auto r = not_finite(norms, message("iteration ", iteration, ": the residual"))) return *r;
     const std::vector<double> sizes = block_norms(blocks, problem.free_values());
+    if (auto r = not_finite(sizes, message("iteration ", iteration, ": the iterate"))) return *r;
+    if (residual_converged(norms)) return finish(NewtonOutcome::Converged, "residual tolerance met");
     bool small_step = alpha == 1;
     for (int b = 0; b < n_blocks; ++b)
       small_step = small_step && steps[b] <= options_.increment_tolerance * std::max(sizes[b], 1e-300);

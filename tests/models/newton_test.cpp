@@ -83,5 +83,30 @@ TEST(NewtonGlobalisation, RejectsANegativeWatchdog) {
   EXPECT_THROW(NewtonSolver{options}, Error);
 }
 
+// Residual entries that are finite but whose norm overflows (f0 = u - 1e300 on one cell): the norm is no
+// measure of convergence, so the solve is Diverged, naming the block, and never Converged (issue 11, case 1:
+// an infinite tolerance once declared every residual converged).
+struct OverflowingLoad {  // f0 = u - 1e300, tested with u
+  template <class S>
+  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+    out.f0[0][0] = in.value[0][0] - 1e300;
+  }
+};
+
+TEST(NewtonNonFinite, AnOverflowingResidualNormIsDivergedNamingTheBlock) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Quadrilateral));
+  Model model(mesh);
+  model.add_unknown("u", std::make_shared<const FESpace>(mesh, 1, 1));
+  model.add_brick(std::make_shared<WeakFormBrick<OverflowingLoad>>(
+      WeakForm{.name = "overflow", .fields = {{"u"}}, .tests = {"u"}, .couplings = {{"u", "u"}}, .extra_degree = 2},
+      OverflowingLoad{}));
+  model.finalize();
+  const NewtonReport report = NewtonSolver(NewtonOptions{}).solve(model);
+  EXPECT_EQ(report.outcome, NewtonOutcome::Diverged) << to_string(report.outcome) << ": " << report.message;
+  EXPECT_NE(report.message.find("block 'u'"), std::string::npos) << report.message;
+  EXPECT_NE(report.message.find("not finite"), std::string::npos) << report.message;
+  EXPECT_TRUE(model.values("u").allFinite());
+}
+
 }  // namespace
 }  // namespace pc

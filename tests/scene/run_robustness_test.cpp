@@ -1,0 +1,145 @@
+// The runner against hostile input and conditions (issue 11): non-finite results stop the run and are
+// never written, an unwritable or empty --out is refused before the first step with a clear message, a
+// second run into a folder in use is refused, and a stopped run says why on stderr even with --quiet.
+// The runner is run as a user runs it, as a separate process (PIEZOCONTACT_RUNNER).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include "support/error_and_temp_dir.hpp"
+
+// Built with the runner only (PIEZOCONTACT_BUILD_EXAMPLES), whose path CMake passes.
+#ifdef PIEZOCONTACT_RUNNER
+namespace pc {
+namespace {
+
+const std::string kScene = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
+// A small, fast version of the paper's scene.
+const std::string kSmall = " --set mesh.nx=6 --set mesh.ny=2 --set time.steps=2 --no-sweep";
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+struct Outcome {
+  int status = -1;  // exit status, or -1 if the runner did not exit normally (an abort is 128 + signal)
+  std::string out, err;
+};
+
+class RunRobustness : public testing::TemporaryDirectoryTest {
+ protected:
+  Outcome run(const std::string& arguments) {
+    const auto out = directory_ / "stdout.txt", err = directory_ / "stderr.txt";
+    const std::string command = std::string(PIEZOCONTACT_RUNNER) + " " + arguments + " >" + quoted(out.string()) +
+                                " 2>" + quoted(err.string());
+    const int raw = std::system(command.c_str());
+    Outcome o;
+    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    o.out = read_text(out);
+    o.err = read_text(err);
+    return o;
+  }
+
+  // Every file under the directory: none may hold a non-finite number.
+  void expect_no_non_finite_numbers(const std::filesystem::path& dir) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+      if (!entry.is_regular_file() || entry.path().extension() == ".vtu") continue;
+      const std::string text = read_text(entry.path());
+      for (const char* bad : {"nan", "inf", "NaN", "Infinity"})
+        EXPECT_EQ(text.find(bad), std::string::npos) << entry.path() << " holds '" << bad << "'";
+    }
+  }
+};
+
+// Case 1: a material constant of 1e300 overflows every residual norm; the run must not be "completed".
+TEST_F(RunRobustness, AnOverflowingMaterialStopsTheRunAndWritesNoNonFiniteNumber) {
+  const auto out = directory_ / "out";
+  const Outcome o = run("run " + kScene + kSmall + " --only conductive --set 'material.piezo_E[0][0]=1e300' --out " +
+                        quoted(out.string()) + " --quiet");
+  EXPECT_EQ(o.status, 1) << o.err;
+  const std::string summary = read_text(out / "conductive" / "summary.json");
+  EXPECT_NE(summary.find("\"completed\": false"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"message\""), std::string::npos) << summary;
+  expect_no_non_finite_numbers(out);
+  // Case 11: with --quiet, the stop reason is still on stderr.
+  EXPECT_NE(o.err.find("STOPPED"), std::string::npos) << "stderr: " << o.err;
+  EXPECT_NE(o.err.find("not finite"), std::string::npos) << "stderr: " << o.err;
+}
+
+// Case 2: an initial velocity of 1e300: the message names where the first non-finite value appeared.
+TEST_F(RunRobustness, AnOverflowingInitialStateStopsTheRunNamingTheCause) {
+  const auto out = directory_ / "out";
+  const Outcome o = run("run " + kScene + kSmall + " --only insulated --set 'time.v0=[1e300,1e300]' --out " +
+                        quoted(out.string()));
+  EXPECT_EQ(o.status, 1) << o.err;
+  EXPECT_EQ(o.err.find("JSON"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("not finite"), std::string::npos) << o.err;
+  const std::string summary = read_text(out / "insulated" / "summary.json");
+  EXPECT_NE(summary.find("\"completed\": false"), std::string::npos) << summary;
+  expect_no_non_finite_numbers(out);
+}
+
+// Case 3: every unwritable --out is a clear error naming --out and the path, exit 1, never an abort.
+TEST_F(RunRobustness, AnUnwritableOutIsRefusedBeforeTheFirstStep) {
+  const auto file = directory_ / "a_file";
+  std::ofstream(file) << "not a directory\n";
+  for (const std::string& bad : {file.string(), (file / "below").string(), std::string("/dev/null")}) {
+    const Outcome o = run("run " + kScene + kSmall + " --out " + quoted(bad));
+    EXPECT_EQ(o.status, 1) << bad << ": " << o.err;
+    EXPECT_NE(o.err.find("--out"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find(bad), std::string::npos) << o.err;
+    EXPECT_EQ(o.out.find("step 1/"), std::string::npos) << "computed before refusing " << bad;
+  }
+  const Outcome empty = run("run " + kScene + kSmall + " --out ''");
+  EXPECT_EQ(empty.status, 1);
+  EXPECT_NE(empty.err.find("--out is empty"), std::string::npos) << empty.err;
+}
+
+// Case 4: a second run into a folder in use is refused, naming the first run's pid.
+TEST_F(RunRobustness, ASecondRunIntoAFolderInUseIsRefused) {
+  const auto out = directory_ / "out";
+  // The first run: long enough to still be running (bounded by its own wall-time limit).
+  const pid_t first = fork();
+  ASSERT_GE(first, 0);
+  if (first == 0) {
+    const std::string scene = kScene, dir = out.string(), log = (directory_ / "first.txt").string();
+    std::freopen(log.c_str(), "w", stdout);
+    std::freopen(log.c_str(), "a", stderr);
+    execl(PIEZOCONTACT_RUNNER, PIEZOCONTACT_RUNNER, "run", scene.c_str(), "--set", "time.steps=100000", "--set",
+          "time.max_wall_seconds=60", "--only", "insulated", "--no-sweep", "--out", dir.c_str(), (char*)nullptr);
+    _exit(127);
+  }
+  // Wait until the first run writes its history (it holds the folder by then).
+  const auto history = out / "insulated" / "history.csv";
+  for (int i = 0; i < 600 && !std::filesystem::exists(history); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_TRUE(std::filesystem::exists(history)) << read_text(directory_ / "first.txt");
+  const Outcome second = run("run " + kScene + kSmall + " --out " + quoted(out.string()));
+  kill(first, SIGKILL);
+  int status = 0;
+  waitpid(first, &status, 0);
+  EXPECT_EQ(second.status, 1) << second.out << second.err;
+  EXPECT_NE(second.err.find("in use by another run (pid " + std::to_string(first) + ")"), std::string::npos)
+      << second.err;
+  // Once the first run is gone (however it ended), the folder is free again.
+  const Outcome third = run("run " + kScene + kSmall + " --only insulated --out " + quoted(out.string()) + " --quiet");
+  EXPECT_EQ(third.status, 0) << third.err;
+}
+
+}  // namespace
+}  // namespace pc
+#endif  // PIEZOCONTACT_RUNNER
