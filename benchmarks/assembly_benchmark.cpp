@@ -9,23 +9,12 @@
 #include "assembly/mesh_generators.hpp"
 #include "assembly/pointwise_term.hpp"
 #include "assembly/term_assembly.hpp"
+#include "bricks/elastic_flux_kernel.hpp"
 #include "bricks/strain_stiffness_term.hpp"
 #include "bricks/voigt.hpp"
 
 namespace pc {
 namespace {
-
-struct ElasticFlux {
-  double lambda = 1.2, mu = 0.8;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
-    S trace = 0;
-    for (int d = 0; d < in.dim; ++d) trace += in.grad[0][d][d];
-    for (int i = 0; i < in.dim; ++i)
-      for (int j = 0; j < in.dim; ++j)
-        out.f1[0][i][j] = mu * (in.grad[0][i][j] + in.grad[0][j][i]) + (i == j ? lambda * trace : S(0));
-  }
-};
 
 std::shared_ptr<const Mesh> mesh_for(int dim, int n) {
   if (dim == 2) return std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, n, n, Shape::Triangle));

@@ -134,30 +134,40 @@ std::vector<std::string> piezo_material_names() { return piezo_material_registry
 // the tabulated s66, so c66 and (c11 - c12) / 2 differ in the fourth digit). The PZT-5H constants are
 // those of scenes/paper2d.json (plane strain, poled along y) and scenes/box3d.json;
 // tests/bricks/piezo_materials_test.cpp checks both, and the conversion of the data above.
-PC_REGISTER(piezo_material_registry(),
-            {"PZT-4", "PZT-4 (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form", {},
-             preset({1.38999e11, 7.78366e10, 7.42836e10, 1.15412e11, 2.5641e10, 3.0581e10,
-                                       -5.20279, 15.0804, 12.7179, 762.5 * kVacuumPermittivity,
-                                       663.2 * kVacuumPermittivity, 7500})})
-PC_REGISTER(piezo_material_registry(),
-            {"PZT-5A", "PZT-5A (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form", {},
-             preset({1.20346e11, 7.51791e10, 7.50901e10, 1.10867e11, 2.10526e10, 2.25734e10,
-                                       -5.35116, 15.7835, 12.2947, 919.1 * kVacuumPermittivity,
-                                       826.6 * kVacuumPermittivity, 7750})})
-PC_REGISTER(piezo_material_registry(),
-            {"PZT-5H", "PZT-5H (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form", {},
-             preset({1.27205e11, 8.02122e10, 8.46702e10, 1.17436e11, 2.29885e10, 2.34742e10,
-                                       -6.62281, 23.2403, 17.0345, 1704.4 * kVacuumPermittivity,
-                                       1433.6 * kVacuumPermittivity, 7500})})
 // BaTiO3: poled polycrystalline barium titanate (not the single crystal of Berlincourt & Jaffe, Phys.
 // Rev. 111 (1958) 143), as tabulated in Jaffe, Cook & Jaffe 1971 (stress-charge form, three digits:
 // c^E 16.6 7.66 7.75 16.2 4.29 4.48 [1e10 Pa]; e31 -4.4, e33 18.6, e15 11.6 [C/m^2]; eps11^S 11.2e-9,
 // eps33^S 12.6e-9 [F/m]; rho 5700 kg/m^3). Its strain-charge data (s^E 8.55 -2.61 -2.85 8.93 23.3
 // [1e-12 m^2/N]; d31 -79, d33 191, d15 270 [1e-12 C/N]; eps11^T / eps0 1623, eps33^T / eps0 1900) convert
 // to these to within their three digits.
-PC_REGISTER(piezo_material_registry(),
-            {"BaTiO3", "poled BaTiO3 ceramic (Jaffe, Cook & Jaffe 1971), stress-charge form", {},
-             preset({1.66e11, 7.66e10, 7.75e10, 1.62e11, 4.29e10, 4.48e10, -4.4, 18.6, 11.6,
-                                       11.2e-9, 12.6e-9, 5700})})
 
+namespace {
+
+// Name, source, constants (c11 c12 c13 c33 c44 c66 [Pa]; e31 e33 e15 [C/m^2]; eps11^S eps33^S [F/m]; rho).
+struct TabulatedPreset {
+  const char* name;
+  const char* source;
+  HexagonalConstants constants;
+};
+const TabulatedPreset kPresets[] = {
+    {"PZT-4", "PZT-4 (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
+     {1.38999e11, 7.78366e10, 7.42836e10, 1.15412e11, 2.5641e10, 3.0581e10, -5.20279, 15.0804, 12.7179,
+      762.5 * kVacuumPermittivity, 663.2 * kVacuumPermittivity, 7500}},
+    {"PZT-5A", "PZT-5A (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
+     {1.20346e11, 7.51791e10, 7.50901e10, 1.10867e11, 2.10526e10, 2.25734e10, -5.35116, 15.7835, 12.2947,
+      919.1 * kVacuumPermittivity, 826.6 * kVacuumPermittivity, 7750}},
+    {"PZT-5H", "PZT-5H (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
+     {1.27205e11, 8.02122e10, 8.46702e10, 1.17436e11, 2.29885e10, 2.34742e10, -6.62281, 23.2403, 17.0345,
+      1704.4 * kVacuumPermittivity, 1433.6 * kVacuumPermittivity, 7500}},
+    {"BaTiO3", "poled BaTiO3 ceramic (Jaffe, Cook & Jaffe 1971), stress-charge form",
+     {1.66e11, 7.66e10, 7.75e10, 1.62e11, 4.29e10, 4.48e10, -4.4, 18.6, 11.6,
+      11.2e-9, 12.6e-9, 5700}},
+};
+
+[[maybe_unused]] const bool kPresetsRegistered = [] {
+  for (const TabulatedPreset& p : kPresets) piezo_material_registry().add({p.name, p.source, {}, preset(p.constants)});
+  return true;
+}();
+
+}  // namespace
 }  // namespace pc

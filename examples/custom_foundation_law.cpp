@@ -1,6 +1,7 @@
-// A foundation law of your own, in the driver: a conductive foundation that can only deliver a limited
-// charge flux. It is checked by the law checker at start-up, plugged into ConductiveFoundationBrick, and
-// the paper's strip is run with it and with the paper's linear law, D.n = k_e (phi - phi_f).
+// A foundation law of your own, in one file: a conductive foundation that can only deliver a limited
+// charge flux. It declares its parameters, registers itself under a name, is checked by the law checker
+// at start-up, and the paper's strip (stacked by the recipe) is run with it and with the paper's linear
+// law, D.n = k_e (phi - phi_f), each chosen by its registered name.
 //
 //   build/release/examples/custom_foundation_law
 #include <algorithm>
@@ -14,27 +15,17 @@
 
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
-#include "bricks/conductive_foundation_brick.hpp"
-#include "bricks/dirichlet_brick.hpp"
-#include "bricks/elasticity_brick.hpp"
-#include "bricks/friction_brick.hpp"
-#include "bricks/inertia_brick.hpp"
 #include "bricks/law_registry.hpp"
 #include "bricks/laws/foundation_laws.hpp"
 #include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/law_parameters.hpp"
 #include "bricks/laws/normal_laws.hpp"
-#include "bricks/normal_response_brick.hpp"
-#include "bricks/permittivity_brick.hpp"
-#include "bricks/piezoelectric_brick.hpp"
-#include "bricks/source_bricks.hpp"
+#include "bricks/piezo_materials.hpp"
 #include "bricks/testing/law_checker.hpp"
-#include "bricks/viscosity_brick.hpp"
-#include "models/model.hpp"
 #include "models/piezo/initial_potential.hpp"
+#include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
-#include "models/time_scheme.hpp"
 
 using namespace pc;
 
@@ -73,46 +64,28 @@ struct SaturatingConductance {
 PC_REGISTER_FOUNDATION_LAW(SaturatingConductance, "saturating",
                            "D.n = k_e phi_s tanh((phi - phi_f) / phi_s): conduction that saturates")
 
-// ---- the paper's strip, with the foundation law as a parameter --------------------------------------------
-// Runs T = 0.2 s in 20 steps on a coarse mesh; returns (x, phi) at the nodes of the contact boundary.
-template <class FoundationLaw>
-std::vector<std::pair<double, double>> potential_on_contact(const FoundationLaw& foundation) {
-  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {0.03, 0.01}, 12, 4, Shape::Triangle));
-  Model model(mesh);
-  model.add_unknown("v", std::make_shared<const FESpace>(mesh, 1, 2));
-  model.add_unknown("phi", std::make_shared<const FESpace>(mesh, 1, 1));
-  BackwardEuler scheme;
-  scheme.attach(model, /*with_acceleration=*/true);
-
-  // PZT-5H, plane strain, poled along +y (scenes/paper2d.json); Kelvin-Voigt viscosity A = 0.01 s * B.
-  const Eigen::MatrixXd B{{127.205e9, 84.6702e9, 0}, {84.6702e9, 117.436e9, 0}, {0, 0, 22.9885e9}};
-  model.set_constant("rho", 7800.0);
-  model.set_constant("A", Eigen::MatrixXd(0.01 * B));
-  model.set_constant("B", B);
-  model.set_constant("E", Eigen::MatrixXd{{0, 0, 17.0345}, {-6.62281, 23.2403, 0}});
-  model.set_constant("beta", Eigen::MatrixXd{{1.5091e-8, 0}, {0, 1.2693e-8}});
-
-  model.add_brick(std::make_shared<InertiaBrick>());
-  model.add_brick(std::make_shared<ViscosityBrick>());
-  model.add_brick(std::make_shared<ElasticityBrick>());
-  model.add_brick(std::make_shared<PiezoelectricCouplingBrick>());
-  model.add_brick(std::make_shared<PermittivityBrick>());
-  const Load traction = [](const double*, double t, double* out) {
-    out[0] = 0;
-    out[1] = -t;
-  };
-  model.add_brick(std::make_shared<TractionBrick>(traction, LoadTime::Varying, "top"));
-  model.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", "left")));
-  model.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("phi", "top")));
-  // Law parameters are model constants: c_nu, c_tau, and the foundation law's own (k_e, phi_f, ...).
-  model.set_constants(law_values(LinearDampedResponse{1e12}));
-  model.set_constants(law_values(ViscousFriction{0.3}));
-  model.set_constants(law_values(foundation));
-  model.add_brick(std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom"));
-  model.add_brick(std::make_shared<FrictionBrick<ViscousFriction>>("bottom"));
-  // The law under study: any law type the brick accepts.
-  model.add_brick(std::make_shared<ConductiveFoundationBrick<FoundationLaw>>("bottom"));
-  model.finalize();
+// ---- the paper's strip, with the foundation law chosen by its registered name ------------------------------
+// The recipe stacks the paper's bricks (examples/paper_bricks.cpp stacks them by hand) and makes the
+// foundation brick of the law the spec names, writing its parameters into the model's constants. Runs
+// T = 0.2 s in 20 steps on a coarse mesh; returns (x, phi) at the nodes of the contact boundary.
+std::vector<std::pair<double, double>> potential_on_contact(const Choice& foundation) {
+  PiezoContactSpec spec;
+  spec.mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {0.03, 0.01}, 12, 4, Shape::Triangle));
+  const PiezoTensors pzt = piezo_material("PZT-5H").tensors(2, Axis::y);  // plane strain, poled along +y
+  spec.rho = 7800;                                                        // the paper's density
+  spec.B = pzt.B;
+  spec.A = 0.01 * pzt.B;  // Kelvin-Voigt, tau_v = 0.01 s
+  spec.E = pzt.E;
+  spec.beta = pzt.beta;
+  spec.clamped = {"left"};
+  spec.grounded = {"top"};
+  spec.tractions = {{"top", [](const double*, double t, double* out) { out[0] = 0, out[1] = -t; }}};
+  spec.contact = "bottom";
+  spec.normal = {"linear_damped", law_values(LinearDampedResponse{1e12})};
+  spec.friction = {"viscous", law_values(ViscousFriction{0.3})};
+  spec.foundation = foundation;  // the law under study, by name
+  PiezoContactModel built = build_piezo_contact_model(spec);
+  Model& model = *built.model;
 
   StepperOptions options;
   options.end = 0.2;
@@ -120,8 +93,8 @@ std::vector<std::pair<double, double>> potential_on_contact(const FoundationLaw&
   options.prediction = Prediction::Previous;
   NewtonSolver newton;
   StepperCallbacks callbacks;
-  callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, scheme, newton); };  // phi_0
-  const RunSummary run = Stepper(options).run(model, scheme, newton, callbacks);
+  callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, *built.scheme, newton); };  // phi_0
+  const RunSummary run = Stepper(options).run(model, *built.scheme, newton, callbacks);
   require(run.completed, "the run stopped: ", run.message);
   std::printf("  %d steps, %d Newton iterations (at most %d per step)\n", run.steps, run.newton_iterations_total,
               run.newton_iterations_max_per_step);
@@ -161,9 +134,9 @@ int main() {
                   p.doc.c_str());
 
     std::printf("linear conductance, D.n = k_e (phi - phi_f):\n");
-    const auto linear = potential_on_contact(LinearConductance{1.0, -48.0});
+    const auto linear = potential_on_contact({"conductive", law_values(LinearConductance{1.0, -48.0})});
     std::printf("saturating conductance, D.n = k_e phi_s tanh((phi - phi_f) / phi_s):\n");
-    const auto limited = potential_on_contact(saturating);
+    const auto limited = potential_on_contact({"saturating", law_values(saturating)});
 
     std::printf("\nphi on the contact boundary y = 0 at T = 0.2 s [V]\n%10s %12s %12s\n", "x [m]", "linear",
                 "saturating");

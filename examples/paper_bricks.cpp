@@ -31,6 +31,7 @@
 #include "bricks/source_bricks.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "models/model.hpp"
+#include "models/piezo/material_constants.hpp"
 #include "models/solvers/newton.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
@@ -39,16 +40,6 @@
 #include "models/time_scheme.hpp"
 
 using namespace pc;
-
-// PZT-5H in plane strain, poled along +y, Voigt order (xx, yy, xy) with engineering shear: the values of
-// the scene file scenes/paper2d.json, as the model's constants (SI units).
-void set_pzt5h(Model& model) {
-  const Eigen::MatrixXd B{{127.205e9, 84.6702e9, 0}, {84.6702e9, 117.436e9, 0}, {0, 0, 22.9885e9}};
-  model.set_constant("B", B);                                                         // elasticity
-  model.set_constant("A", 0.01 * B);                                                  // viscosity, tau_v = 0.01 s
-  model.set_constant("E", Eigen::MatrixXd{{0, 0, 17.0345}, {-6.62281, 23.2403, 0}});  // piezoelectric, 2 x 3
-  model.set_constant("beta", Eigen::MatrixXd{{1.5091e-8, 0}, {0, 1.2693e-8}});        // permittivity, 2 x 2
-}
 
 int main(int argc, char** argv) {
   const std::string output = argc > 1 ? argv[1] : "paper_bricks_out";
@@ -65,8 +56,11 @@ int main(int argc, char** argv) {
     scheme.attach(model, /*with_acceleration=*/true);
 
     // ---- constants: the bricks (and the output) read them by name ---------------------------------
+    // PZT-5H from the presets, plane strain, poled along +y (Voigt xx, yy, xy, engineering shear): rho,
+    // B = c^E, E = e, beta = eps^S, and the Kelvin-Voigt viscosity A = 0.01 s * B; then the paper's density.
+    // The values are those of scenes/paper2d.json (tests/bricks/piezo_materials_test.cpp checks it).
+    set_material_constants(model, piezo_material("PZT-5H").tensors(2, Axis::y), 0.01);
     model.set_constant("rho", 7800.0);
-    set_pzt5h(model);
 
     // ---- bricks -----------------------------------------------------------------------------------
     // Bulk: rho a.w + A eps(v):eps(w) + B eps(u):eps(w) + E^T grad phi:eps(w) - E eps(u).grad psi

@@ -14,11 +14,11 @@
 #include "bricks/laws/normal_laws.hpp"
 #include "bricks/normal_response_brick.hpp"
 #include "bricks/permittivity_brick.hpp"
-#include "bricks/piezo_materials.hpp"
 #include "bricks/piezoelectric_brick.hpp"
 #include "bricks/source_bricks.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "models/model.hpp"
+#include "models/piezo/material_constants.hpp"
 #include "models/piezo/initial_potential.hpp"
 #include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
@@ -38,12 +38,7 @@ int main() {
     scheme.attach(model, /*with_acceleration=*/true);
 
     // PZT-5H from the library's presets, plane strain, poled along +y; Kelvin-Voigt viscosity A = 0.01 s B.
-    const PiezoTensors pzt = piezo_material("PZT-5H").tensors(2, Axis::y);
-    model.set_constant("rho", pzt.rho);
-    model.set_constant("A", Eigen::MatrixXd(0.01 * pzt.B));
-    model.set_constant("B", pzt.B);
-    model.set_constant("E", pzt.E);
-    model.set_constant("beta", pzt.beta);
+    set_material_constants(model, piezo_material("PZT-5H").tensors(2, Axis::y), 0.01);
     // The contact laws' parameters are model constants too: the normal law's and the user's law's.
     model.set_constants(law_values(LinearDampedResponse{1e10}));
     model.set_constants(law_values(VelocityWeakeningCoulomb{0.6, 0.3, 1e-9, 1e-12}));

@@ -10,6 +10,7 @@
 #include "assembly/mesh_generators.hpp"
 #include "assembly/pointwise_term.hpp"
 #include "assembly/term_assembly.hpp"
+#include "bricks/elastic_flux_kernel.hpp"
 
 namespace pc {
 namespace {
@@ -38,20 +39,7 @@ TEST(Dual, KinksTakeTheDocumentedOneSidedDerivative) {
   EXPECT_TRUE(std::isfinite(sqrt(zero).d[0]));
 }
 
-// Isotropic elasticity written as a flux kernel (tangent from Dual) ...
-struct ElasticFlux {
-  double lambda, mu;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
-    S trace = 0;
-    for (int d = 0; d < in.dim; ++d) trace += in.grad[0][d][d];
-    for (int i = 0; i < in.dim; ++i)
-      for (int j = 0; j < in.dim; ++j)
-        out.f1[0][i][j] = mu * (in.grad[0][i][j] + in.grad[0][j][i]) + (i == j ? lambda * trace : S(0));
-  }
-};
-
-// ... and by hand: K_ij = sum_q w (lambda div N_i div N_j + mu (grad N_i : grad N_j + grad N_i : grad N_j^T)).
+// Isotropic elasticity written as a flux kernel (bricks/elastic_flux_kernel.hpp: tangent from Dual) and by hand: K_ij = sum_q w (lambda div N_i div N_j + mu (grad N_i : grad N_j + grad N_i : grad N_j^T)).
 class HandElasticity : public Term {
  public:
   HandElasticity(double lambda, double mu)
