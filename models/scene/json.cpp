@@ -568,10 +568,16 @@ Json read_json_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   // A directory opens as a stream on Linux and then reads as empty.
   require(in.good() && !std::filesystem::is_directory(path), "cannot open scene '", path, "'");
-  std::ostringstream content;
-  content << in.rdbuf();
+  // Read in chunks up to a bound, so that /dev/zero or a runaway file is refused instead of filling memory.
+  constexpr std::size_t kMaxSceneBytes = std::size_t(64) << 20;
+  std::string content;
+  char chunk[65536];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
+    content.append(chunk, std::size_t(in.gcount()));
+    require(content.size() <= kMaxSceneBytes, "scene '", path, "' is larger than 64 MiB: not a scene file");
+  }
   require(!in.bad(), "cannot read scene '", path, "'");
-  return parse_json(content.str(), path);
+  return parse_json(content, path);
 }
 
 Json parse_json_value_from_cli(const std::string& text, const std::string& source_name) {

@@ -13,6 +13,7 @@
 #include "bricks/law_registry.hpp"
 #include "bricks/piezo_materials.hpp"
 #include "bricks/voigt.hpp"
+#include "models/scene/memory_estimate.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registered_keys.hpp"
 #include "models/solvers/condensed_solve.hpp"
@@ -62,7 +63,29 @@ std::vector<std::string> names_of(const Json& j) {
   return names;
 }
 
-std::shared_ptr<const Mesh> build_mesh(const Json& m, const std::string& directory, Scene& scene) {
+// Refuses a generated mesh whose run would not fit in memory: the machine's available memory, or the
+// user's solver.max_memory_gib.
+void require_fits(const Json& scene_json, const Json& m, int dim, const int* cells) {
+  const auto order_key = m.find("order");
+  const int order = order_key && order_key->is_number() && order_key->as_number() == 2 ? 2 : 1;
+  const MemoryEstimate e = estimate_structured_run(dim, cells, order);
+  double limit = available_memory_bytes();
+  std::string source = "available on this machine";
+  if (const auto solver = scene_json.find("solver"))
+    if (const auto cap = solver->find("max_memory_gib")) {
+      limit = cap->as_positive() * 1073741824.0;
+      source = "allowed by 'solver.max_memory_gib'";
+    }
+  if (limit <= 0 || e.bytes <= limit) return;
+  std::string shape = message(cells[0]);
+  for (int d = 1; d < dim; ++d) shape += message(" x ", cells[d]);
+  fail("scene: 'mesh' (", shape, " cells, P", order, ") has about ", e.dofs, " dofs, and a run would need about ",
+       e.bytes / 1073741824.0, " GiB, more than the ", limit / 1073741824.0, " GiB ", source,
+       ": coarsen mesh.nx/ny/nz (or set solver.max_memory_gib)");
+}
+
+std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, const std::string& directory,
+                                       Scene& scene) {
   require_known_keys(m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor"});
   require(!(m.contains("gmsh") && m.contains("generator")), "scene: 'mesh' gives both generator and gmsh: a mesh "
           "is generated or read, not both");
@@ -82,6 +105,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& m, const std::string& directo
   scene.nx = m.at("nx").as_int_at_least(1);
   scene.ny = m.at("ny").as_int_at_least(1);
   if (generator == "rectangle") {
+    const int cells[2] = {scene.nx, scene.ny};
+    require_fits(scene_json, m, 2, cells);
     require(cell == "triangle" || cell == "quadrilateral", "scene: 'mesh.cell' must be triangle or quadrilateral for "
             "a rectangle, got '", cell, "'");
     scene.mesh_description = message(scene.nx, " x ", scene.ny, " ", cell, "s");
@@ -91,6 +116,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& m, const std::string& directo
   if (generator == "box") {
     const auto z = m.at("z").as_vector(2);
     const int nz = m.at("nz").as_int_at_least(1);
+    const int cells[3] = {scene.nx, scene.ny, nz};
+    require_fits(scene_json, m, 3, cells);
     require(cell == "tetrahedron" || cell == "hexahedron", "scene: 'mesh.cell' must be tetrahedron or hexahedron "
             "for a box, got '", cell, "'");
     scene.mesh_description = message(scene.nx, " x ", scene.ny, " x ", nz, " ", cell, "s");
@@ -185,7 +212,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
   }
   PiezoContactSpec& spec = scene.spec;
 
-  problems.check_void([&] { spec.mesh = build_mesh(json.at("mesh"), directory, scene); });
+  problems.check_void([&] { spec.mesh = build_mesh(json, json.at("mesh"), directory, scene); });
   problems.check_void([&] {
     if (!json.contains("mesh")) return;  // reported once, by the mesh's own check above
     spec.order = json.at("mesh").at("order").as_int();
@@ -395,9 +422,10 @@ Scene load_scene(const Json& json, const std::string& directory) {
     const auto s = json.find("solver");
     if (!s) return;
     require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog",
-                            "cutback_factor", "condensed", "condensation"});
+                            "cutback_factor", "condensed", "condensation", "condensed_max_dofs", "max_memory_gib"});
     if (const auto x = s->find("condensed"))
       scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
+    if (const auto x = s->find("condensed_max_dofs")) scene.newton.condensed_max_dofs = x->as_int_at_least(0);
     scene.newton.condensation =
         chosen_entry(*s, "condensation", condensation_registry(), NewtonOptions{}.condensation).name;
     scene.newton.linear_solver =

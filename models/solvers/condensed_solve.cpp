@@ -37,14 +37,14 @@ Condensation condensation_from_string(const std::string& name) {
 
 std::string to_string(Condensation method) { return method == Condensation::Schur ? "schur" : "columns"; }
 
-CondensedSolve::CondensedSolve(Condensation method, std::string linear_solver, double max_fraction)
-    : method_(method), linear_solver_name_(std::move(linear_solver)), max_fraction_(max_fraction) {}
+CondensedSolve::CondensedSolve(Condensation method, std::string linear_solver, double max_fraction, int max_dofs)
+    : method_(method), linear_solver_name_(std::move(linear_solver)), max_fraction_(max_fraction), max_dofs_(max_dofs) {}
 
 bool CondensedSolve::applies(NonlinearProblem& problem) const {
   if (max_fraction_ <= 0 || uncondensable_ == &problem) return false;
   const double m = double(problem.nonlinear_dofs().size());
   // m = 0 (a linear problem) also gains: the factorisation of A is kept from solve to solve.
-  return m <= max_fraction_ * double(problem.residual().size());
+  return m <= max_fraction_ * double(problem.residual().size()) && m <= double(max_dofs_);
 }
 
 CondensedStep CondensedSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b) {

@@ -45,8 +45,10 @@ struct CondensedStep {
 
 class CondensedSolve {
  public:
-  // Applies to problems whose nonlinear dofs are at most max_fraction of all (0: to none).
-  CondensedSolve(Condensation method, std::string linear_solver, double max_fraction);
+  // Applies to problems whose nonlinear dofs are at most max_fraction of all (0: to none) and at most
+  // max_dofs in number: the dense work on them grows as their cube, so past a few thousand a full
+  // factorisation per iteration is the cheaper path.
+  CondensedSolve(Condensation method, std::string linear_solver, double max_fraction, int max_dofs);
   // Whether the problem's nonlinear dofs are few enough and its linear part has not failed to condense.
   bool applies(NonlinearProblem& problem) const;
   // The step dx with J dx = b for the problem's current (assembled) Jacobian.
@@ -65,6 +67,7 @@ class CondensedSolve {
   Condensation method_;
   std::string linear_solver_name_;
   double max_fraction_;
+  int max_dofs_;
   // The problem whose linear part could not be condensed (singular): it is solved in full from then on.
   const NonlinearProblem* uncondensable_ = nullptr;
   const NonlinearProblem* problem_ = nullptr;

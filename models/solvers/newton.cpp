@@ -48,7 +48,7 @@ std::string to_string(NewtonOutcome outcome) {
 NewtonSolver::NewtonSolver(NewtonOptions options)
     : options_(std::move(options)),
       condensed_(condensation_from_string(options_.condensation), options_.linear_solver,
-                 options_.condensed_max_fraction) {
+                 options_.condensed_max_fraction, options_.condensed_max_dofs) {
   require(options_.max_iterations >= 1, "Newton: max_iterations must be >= 1, got ", options_.max_iterations);
   require(options_.relative_tolerance >= 0 && options_.absolute_tolerance >= 0 && options_.increment_tolerance >= 0,
           "Newton: tolerances must be >= 0");

@@ -45,6 +45,9 @@ struct NewtonOptions {
   // dense system on the active ones, instead of a new factorisation. Used when the nonlinear dofs are at
   // most this fraction of all; 0 disables it.
   double condensed_max_fraction = 0.25;
+  // ... and at most this many: the dense systems on them cost m^3 (1600: every mesh of the fast-path
+  // study up to 480 x 160 is condensed; a contact face of 2000 nodes is not, and is solved in full).
+  int condensed_max_dofs = 1600;
   // "schur" (MUMPS's Schur complement of the interior: one solve's worth of work per iteration) or
   // "columns" (any linear_solver: two solves per iteration, plus one per newly active dof and factorisation).
   std::string condensation = "schur";

@@ -168,6 +168,23 @@ TEST(NonlinearProblem, CondensedSolveFactorisesTheLinearPartOnceAndMatchesTheFul
   }
 }
 
+// Past condensed_max_dofs nonlinear dofs the dense work (m^3) would exceed a full factorisation's: the
+// problem is solved in full, to the same answer.
+TEST(NonlinearProblem, TooManyNonlinearDofsAreSolvedInFull) {
+  const int n = 40;
+  const std::vector<int> held = {5, 10, 15, 20, 25, 30, 35, 39};
+  const Eigen::VectorXd full = solve_in_full(n, true, held);
+  for (const int cap : {8, 7}) {
+    SpringChain problem(n, true, held);
+    NewtonOptions options;
+    options.condensed_max_dofs = cap;
+    const NewtonReport report = NewtonSolver(options).solve(problem);
+    ASSERT_TRUE(report.converged()) << report.message;
+    EXPECT_EQ(report.condensed, cap >= int(held.size())) << cap;
+    EXPECT_LT((problem.free_values() - full).norm(), 1e-12 * full.norm()) << cap;
+  }
+}
+
 TEST(NonlinearProblem, ASingularLinearPartIsSchurCondensedOrSolvedInFullFromThenOn) {
   const int n = 40;
   {

@@ -86,6 +86,7 @@ TEST(Registry, CheckRefusesWhatRunWouldRefuseWithTheKeyAndTheValue) {
       {{"output.grid.x=[0,0.06,31]"}, "'output.grid': the point (0.032, 0, 0) is outside the mesh"},
       {{"mesh.gmsh=strip2d.geo"}, "'mesh' gives both generator and gmsh"},
       {{"material.viscosity_tau_v=0.02"}, "'material.viscosity_A' and 'material.viscosity_tau_v' disagree"},
+      {{"solver.condensed_max_dofs=-1"}, "'solver.condensed_max_dofs'"},
   };
   for (const auto& [overrides, expected] : cases) EXPECT_CONTAINS(problem(overrides), expected);
 }
