@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "assembly/error.hpp"
+#include "models/scene/interrupts.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_runner.hpp"
@@ -119,6 +120,7 @@ int main(int argc, char** argv) {
       for (const auto& f : scene.foundations) known = known || f.name == name;
       if (!known) throw pc::Error("--only: the scene has no foundation '" + name + "'");
     }
+    pc::install_interrupt_handlers();  // SIGINT, SIGTERM: stop after the current step, results written
     return pc::run_scene(scene, options) ? 0 : 1;
   } catch (const pc::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

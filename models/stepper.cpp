@@ -63,6 +63,12 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
                                 " accepted): the limit max_attempts = ", o.max_attempts, " was reached");
       break;
     }
+    if (o.stop_requested) {
+      if (const std::string reason = o.stop_requested(); !reason.empty()) {
+        summary.message = message("stopped at t = ", t, " after ", summary.steps, " steps: ", reason);
+        break;
+      }
+    }
     if (o.max_wall_seconds > 0 && elapsed() >= o.max_wall_seconds) {
       summary.message = message("stopped at t = ", t, " after ", summary.steps, " steps: the wall-time limit of ",
                                 o.max_wall_seconds, " s was reached");

@@ -30,6 +30,9 @@ struct StepperOptions {
   // wall-time limit bounds a batch job.
   int max_attempts = 0;
   double max_wall_seconds = 0;
+  // Asked before every step attempt: a non-empty answer (a reason, e.g. "interrupted by SIGTERM") stops the
+  // run there, like a budget, with that reason in its message.
+  std::function<std::string()> stop_requested;
   Prediction prediction = Prediction::Zero;
 };
 

@@ -22,6 +22,7 @@
 #include "models/output/boundary_table.hpp"
 #include "models/output/csv_log.hpp"
 #include "models/output/piezo_fields.hpp"
+#include "models/scene/interrupts.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/initial_potential.hpp"
 
@@ -244,6 +245,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
   options.output_every = scene.output.vtu_every;
   options.max_attempts = scene.max_attempts;
   options.max_wall_seconds = scene.max_wall_seconds;
+  options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");
 
@@ -425,6 +427,7 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
   for (const SceneFoundation& f : scene.foundations) {
     if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), f.name) == options.only.end())
       continue;
+    if (interrupt_reason()) break;  // an interrupted run starts nothing new
     if (options.progress) std::printf("%s, %s foundation: %s\n", scene.name.c_str(), f.name.c_str(), scene.mesh_description.c_str());
     const FoundationRunResult r = run_foundation(scene, f, out.empty() ? "" : out + "/" + f.name, options.progress);
     all_completed = all_completed && r.completed;
@@ -447,7 +450,8 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
   const auto swept = std::find_if(scene.foundations.begin(), scene.foundations.end(), [](const SceneFoundation& f) {
     return find_parameter(foundation_law_registry().at(f.law.name, "foundation").parameters, "phi_f") != nullptr;
   });
-  if (options.sweep && !scene.output.phi_f_sweep.empty() && swept != scene.foundations.end() && !out.empty()) {
+  if (options.sweep && !scene.output.phi_f_sweep.empty() && swept != scene.foundations.end() && !out.empty() &&
+      !interrupt_reason()) {
     FoundationRun sweep(scene, *swept);
     std::vector<std::vector<double>> rows;
     for (double phi_f : scene.output.phi_f_sweep) {

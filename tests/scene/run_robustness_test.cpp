@@ -4,6 +4,7 @@
 // The runner is run as a user runs it, as a separate process (PIEZOCONTACT_RUNNER).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -107,6 +108,41 @@ TEST_F(RunRobustness, AnUnwritableOutIsRefusedBeforeTheFirstStep) {
   const Outcome empty = run("run " + kScene + kSmall + " --out ''");
   EXPECT_EQ(empty.status, 1);
   EXPECT_NE(empty.err.find("--out is empty"), std::string::npos) << empty.err;
+}
+
+// SIGTERM (or SIGINT) stops a run at the end of its current step: the summary says so, every history row is
+// whole, the rest of the scene is not started, and the exit status is 1.
+TEST_F(RunRobustness, ASignalStopsTheRunAfterItsStepWithEverythingWritten) {
+  const auto out = directory_ / "out";
+  const pid_t run_pid = fork();
+  ASSERT_GE(run_pid, 0);
+  if (run_pid == 0) {
+    const std::string scene = kScene, dir = out.string(), log = (directory_ / "run.txt").string();
+    std::freopen(log.c_str(), "w", stdout);
+    std::freopen(log.c_str(), "a", stderr);
+    execl(PIEZOCONTACT_RUNNER, PIEZOCONTACT_RUNNER, "run", scene.c_str(), "--set", "time.steps=100000", "--set",
+          "time.max_wall_seconds=60", "--out", dir.c_str(), "--quiet", (char*)nullptr);
+    _exit(127);
+  }
+  const auto history = out / "conductive" / "history.csv";
+  for (int i = 0; i < 600 && (!std::filesystem::exists(history) || read_text(history).size() < 200); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  kill(run_pid, SIGTERM);
+  int status = 0;
+  waitpid(run_pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "the runner died of the signal instead of stopping";
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string summary = read_text(out / "conductive" / "summary.json");
+  EXPECT_NE(summary.find("\"completed\": false"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("interrupted by SIGTERM"), std::string::npos) << summary;
+  const std::string rows = read_text(history);
+  ASSERT_FALSE(rows.empty());
+  EXPECT_EQ(rows.back(), '\n') << "a half-written row";
+  std::istringstream lines(rows);
+  for (std::string line; std::getline(lines, line);)
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 3) << line;
+  EXPECT_FALSE(std::filesystem::exists(out / "insulated")) << "the next foundation was started";
+  EXPECT_NE(read_text(directory_ / "run.txt").find("interrupted by SIGTERM"), std::string::npos);
 }
 
 // Case 4: a second run into a folder in use is refused, naming the first run's pid.

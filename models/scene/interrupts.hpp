@@ -1,0 +1,12 @@
+#pragma once
+// SIGINT and SIGTERM as requests to stop: the runner installs the handlers, and a running time loop stops
+// at the end of its current step, so that its results so far, its summary and the stop reason are written
+// and the process exits non-zero instead of dying mid-write.
+namespace pc {
+
+// Installs the handlers (once; later calls do nothing).
+void install_interrupt_handlers();
+// "interrupted by SIGINT" / "interrupted by SIGTERM" once a signal arrived, else null.
+const char* interrupt_reason();
+
+}  // namespace pc
