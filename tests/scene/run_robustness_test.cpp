@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -53,6 +54,32 @@ class RunRobustness : public testing::TemporaryDirectoryTest {
     o.out = read_text(out);
     o.err = read_text(err);
     return o;
+  }
+
+  // Starts a long run of the paper's scene in the background (bounded by its own wall-time limit), its
+  // output into `out` and its stdout and stderr into `log`; `extra` are more runner arguments.
+  pid_t start_long_run(const std::filesystem::path& out, const std::filesystem::path& log,
+                       const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {PIEZOCONTACT_RUNNER, "run", kScene, "--set", "time.steps=100000",
+                                     "--set", "time.max_wall_seconds=60", "--out", out.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const pid_t pid = fork();
+    if (pid == 0) {
+      std::freopen(log.c_str(), "w", stdout);
+      std::freopen(log.c_str(), "a", stderr);
+      std::vector<char*> argv;
+      for (std::string& a : args) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(PIEZOCONTACT_RUNNER, argv.data());
+      _exit(127);
+    }
+    return pid;
+  }
+
+  // Waits (at most 30 s) until the file holds at least `bytes` bytes.
+  static void wait_for(const std::filesystem::path& file, std::size_t bytes) {
+    for (int i = 0; i < 600 && (!std::filesystem::exists(file) || read_text(file).size() < bytes); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
 
   // Every file under the directory: none may hold a non-finite number.
@@ -114,19 +141,10 @@ TEST_F(RunRobustness, AnUnwritableOutIsRefusedBeforeTheFirstStep) {
 // whole, the rest of the scene is not started, and the exit status is 1.
 TEST_F(RunRobustness, ASignalStopsTheRunAfterItsStepWithEverythingWritten) {
   const auto out = directory_ / "out";
-  const pid_t run_pid = fork();
+  const pid_t run_pid = start_long_run(out, directory_ / "run.txt", {"--quiet"});
   ASSERT_GE(run_pid, 0);
-  if (run_pid == 0) {
-    const std::string scene = kScene, dir = out.string(), log = (directory_ / "run.txt").string();
-    std::freopen(log.c_str(), "w", stdout);
-    std::freopen(log.c_str(), "a", stderr);
-    execl(PIEZOCONTACT_RUNNER, PIEZOCONTACT_RUNNER, "run", scene.c_str(), "--set", "time.steps=100000", "--set",
-          "time.max_wall_seconds=60", "--out", dir.c_str(), "--quiet", (char*)nullptr);
-    _exit(127);
-  }
   const auto history = out / "conductive" / "history.csv";
-  for (int i = 0; i < 600 && (!std::filesystem::exists(history) || read_text(history).size() < 200); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  wait_for(history, 200);  // a few steps in
   kill(run_pid, SIGTERM);
   int status = 0;
   waitpid(run_pid, &status, 0);
@@ -148,21 +166,12 @@ TEST_F(RunRobustness, ASignalStopsTheRunAfterItsStepWithEverythingWritten) {
 // Case 4: a second run into a folder in use is refused, naming the first run's pid.
 TEST_F(RunRobustness, ASecondRunIntoAFolderInUseIsRefused) {
   const auto out = directory_ / "out";
-  // The first run: long enough to still be running (bounded by its own wall-time limit).
-  const pid_t first = fork();
+  // The first run, still running while the second starts.
+  const pid_t first = start_long_run(out, directory_ / "first.txt", {"--only", "insulated", "--no-sweep"});
   ASSERT_GE(first, 0);
-  if (first == 0) {
-    const std::string scene = kScene, dir = out.string(), log = (directory_ / "first.txt").string();
-    std::freopen(log.c_str(), "w", stdout);
-    std::freopen(log.c_str(), "a", stderr);
-    execl(PIEZOCONTACT_RUNNER, PIEZOCONTACT_RUNNER, "run", scene.c_str(), "--set", "time.steps=100000", "--set",
-          "time.max_wall_seconds=60", "--only", "insulated", "--no-sweep", "--out", dir.c_str(), (char*)nullptr);
-    _exit(127);
-  }
   // Wait until the first run writes its history (it holds the folder by then).
   const auto history = out / "insulated" / "history.csv";
-  for (int i = 0; i < 600 && !std::filesystem::exists(history); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  wait_for(history, 1);
   EXPECT_TRUE(std::filesystem::exists(history)) << read_text(directory_ / "first.txt");
   const Outcome second = run("run " + kScene + kSmall + " --out " + quoted(out.string()));
   kill(first, SIGKILL);
