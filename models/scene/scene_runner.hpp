@@ -11,6 +11,7 @@
 #include <functional>
 #include <string>
 
+#include "models/scene/output_directory_lock.hpp"
 #include "models/scene/scene.hpp"
 
 namespace pc {
@@ -59,22 +60,6 @@ class FoundationRun {
 // Builds and runs one foundation of the scene once (FoundationRun for several runs of one model).
 FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& directory,
                                    bool progress, int steps_override = 0);
-
-// A run's output folder, owned for the run's duration. The constructor creates the directory (and its
-// parents), checks that it is a directory this process can write into, and takes an exclusive lock,
-// flock(2) on <directory>/.piezocontact.lock, which holds the owner's pid; the lock is released by the
-// destructor or when the process exits, however it exits. Every failure is a pc::Error naming the path
-// and "--out": not a directory, not writable, or "in use by another run (pid N)". An empty path is refused.
-class OutputDirectoryLock {
- public:
-  explicit OutputDirectoryLock(const std::string& directory);
-  ~OutputDirectoryLock();
-  OutputDirectoryLock(const OutputDirectoryLock&) = delete;
-  OutputDirectoryLock& operator=(const OutputDirectoryLock&) = delete;
-
- private:
-  int fd_ = -1;
-};
 
 // Runs the scene as SceneRunOptions say; returns false if a run did not complete. A non-empty output
 // directory is locked (OutputDirectoryLock) before the first step. A run whose state or results become
