@@ -1,5 +1,5 @@
 // The command-line runner (installed as `piezocontact`):
-//   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet]
+//   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]
 //   piezocontact check SCENE [--set key=value ...]
 //   piezocontact list [--plugin LIB ...]
 //   piezocontact describe [NAME] [--markdown] [--plugin LIB ...]
@@ -8,7 +8,8 @@
 // without running it, so it refuses whatever `run` would refuse before its first step. --set overrides
 // any scene value by its dotted path: --set contact.c_nu=1e14 --set mesh.nx=120. `list` and `describe`
 // print what a scene can name (laws, time schemes, solvers) with every parameter, from the registries;
-// --plugin loads a plugin first (a scene loads those it names in "plugins").
+// --plugin loads a plugin first (a scene loads those it names in "plugins"). --resume continues the run
+// recorded in DIR/manifest.json (same scene and overrides) from its last checkpoint.
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -26,7 +27,7 @@ namespace {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet]\n"
+               "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]\n"
                "       piezocontact check SCENE [--set key=value ...]\n"
                "       piezocontact list [--plugin LIB ...]\n"
                "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n");
@@ -101,6 +102,7 @@ int main(int argc, char** argv) {
     else if (arg == "--only") options.only.push_back(value());
     else if (arg == "--no-sweep") options.sweep = false;
     else if (arg == "--quiet") options.progress = false;
+    else if (arg == "--resume") options.resume = true;
     else {
       std::fprintf(stderr, "error: unknown option '%s'\n", arg.c_str());
       return usage();

@@ -148,6 +148,11 @@ double Model::affine_factor(const std::string& name) const {
   return f.kind == FieldKind::Affine ? f.factor : 1.0;
 }
 
+std::vector<double> Model::affine_coefficients(const std::string& name) const {
+  const Field& f = field(name);
+  return f.kind == FieldKind::Affine ? f.coefficients : std::vector<double>{};
+}
+
 FieldKind Model::field_kind(const std::string& name) const { return field(name).kind; }
 const FESpace& Model::space(const std::string& name) const { return *field(name).space; }
 std::shared_ptr<const FESpace> Model::space_ptr(const std::string& name) const { return field(name).space; }

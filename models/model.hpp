@@ -55,6 +55,8 @@ class Model : public DataView, public NonlinearProblem {
   void add_affine_field(const std::string& name, const std::string& base, std::vector<std::string> history = {});
   void set_affine(const std::string& name, double factor, std::vector<double> history_coefficients);
   double affine_factor(const std::string& name) const;
+  // An affine field's history coefficients, in the order of its history fields (empty for other fields).
+  std::vector<double> affine_coefficients(const std::string& name) const;
 
   bool has_field(const std::string& name) const { return fields_.count(name) > 0; }
   FieldKind field_kind(const std::string& name) const;

@@ -29,6 +29,7 @@ Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
   require(o.cutback_factor > 0 && o.cutback_factor < 1, "cutback_factor must be in (0, 1), got ", o.cutback_factor);
   require(o.growth_factor >= 1, "growth_factor must be >= 1, got ", o.growth_factor);
   require(o.output_every >= 1, "output_every must be >= 1, got ", o.output_every);
+  require(o.checkpoint_every >= 0, "checkpoint_every must be >= 0 (0: only at a stop), got ", o.checkpoint_every);
   require(o.max_attempts >= 0, "max_attempts must be >= 0 (0: no limit), got ", o.max_attempts);
   require(std::isfinite(o.max_wall_seconds) && o.max_wall_seconds >= 0,
           "max_wall_seconds must be finite and >= 0 (0: no limit), got ", o.max_wall_seconds);
@@ -39,42 +40,55 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
   const StepperOptions& o = options_;
-  model.set_time(o.start);
-  model.apply_dirichlet();
-
   StepRecord record;
-  record.time = o.start;
-  if (callbacks.on_start) {
-    record.newton = callbacks.on_start(model);
-    if (!record.newton.converged()) {
-      summary.message = "the solve at the start did not converge: " + record.newton.message;
-      return summary;
+  StepperState& state = record.state;
+  if (o.resume) {
+    state = *o.resume;
+    require(std::isfinite(state.time) && state.time >= o.start && state.time <= o.end && state.step_size > 0,
+            "resume: the saved time ", state.time, " or step size ", state.step_size, " does not fit the run's span [",
+            o.start, ", ", o.end, "]");
+    model.set_time(state.time);
+    record.step = state.steps;
+    record.time = state.time;
+  } else {
+    state.time = o.start;
+    state.step_size = o.step;
+    model.set_time(o.start);
+    model.apply_dirichlet();
+    record.time = o.start;
+    if (callbacks.on_start) {
+      record.newton = callbacks.on_start(model);
+      if (!record.newton.converged()) {
+        summary.message = "the solve at the start did not converge: " + record.newton.message;
+        summary.state = state;
+        return summary;
+      }
     }
+    if (callbacks.on_output) callbacks.on_output(model, record);
   }
-  if (callbacks.on_output) callbacks.on_output(model, record);
 
   const double tiny = 1e-12 * (o.end - o.start);
-  double t = o.start, dt = o.step;
-  int successes = 0, attempts = 0;
+  double& t = state.time;
+  double& dt = state.step_size;
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   while (t < o.end - tiny) {
-    if (o.max_attempts > 0 && attempts >= o.max_attempts) {
-      summary.message = message("stopped at t = ", t, " after ", attempts, " step attempts (", summary.steps,
+    if (o.max_attempts > 0 && state.attempts >= o.max_attempts) {
+      summary.message = message("stopped at t = ", t, " after ", state.attempts, " step attempts (", state.steps,
                                 " accepted): the limit max_attempts = ", o.max_attempts, " was reached");
       break;
     }
     if (o.stop_requested) {
       if (const std::string reason = o.stop_requested(); !reason.empty()) {
-        summary.message = message("stopped at t = ", t, " after ", summary.steps, " steps: ", reason);
+        summary.message = message("stopped at t = ", t, " after ", state.steps, " steps: ", reason);
         break;
       }
     }
     if (o.max_wall_seconds > 0 && elapsed() >= o.max_wall_seconds) {
-      summary.message = message("stopped at t = ", t, " after ", summary.steps, " steps: the wall-time limit of ",
+      summary.message = message("stopped at t = ", t, " after ", state.steps, " steps: the wall-time limit of ",
                                 o.max_wall_seconds, " s was reached");
       break;
     }
-    ++attempts;
+    ++state.attempts;
     // The last step lands on `end`; a remainder within round-off of dt is dt itself, so that a run of equal
     // steps keeps one step size to the end (a new size would refactorise the linear part).
     const double remaining = o.end - t;
@@ -86,40 +100,49 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       model.set_values(scheme.fields().velocity, Eigen::VectorXd::Zero(model.space(scheme.fields().velocity).num_dofs()));
     model.apply_dirichlet();
     NewtonReport report = newton.solve(model);
-    summary.newton_iterations_total += report.iterations;
+    state.newton_iterations_total += report.iterations;
     if (!report.converged()) {
       restore_unknowns(model, saved);
       model.set_time(t);
       ++record.cutbacks;
-      ++summary.cutbacks;
-      successes = 0;
+      ++state.cutbacks;
+      state.successes = 0;
       dt = attempt * o.cutback_factor;
       if (dt < o.min_step) {
         summary.message = message("step from t = ", t, " failed (", to_string(report.outcome), ": ", report.message,
                                   ") and the step would fall below the floor ", o.min_step);
+        dt = attempt;  // a resumed run retries this step as it was
         break;
       }
       continue;
     }
     scheme.end_step(model, attempt);
     t = remaining <= dt + tiny ? o.end : t + attempt;
-    ++summary.steps;
-    summary.newton_iterations_max_per_step = std::max(summary.newton_iterations_max_per_step, report.iterations);
-    record.step = summary.steps;
+    ++state.steps;
+    state.newton_iterations_max_per_step = std::max(state.newton_iterations_max_per_step, report.iterations);
+    if (++state.successes >= o.successes_before_growth && dt < o.step) {
+      dt = std::min(o.step, dt * o.growth_factor);
+      state.successes = 0;
+    }
+    record.step = state.steps;
     record.time = t;
     record.dt = attempt;
     record.newton = std::move(report);
     if (callbacks.on_step) callbacks.on_step(model, record);
     const bool last = t >= o.end - tiny;
     if (callbacks.on_output && (record.step % o.output_every == 0 || last)) callbacks.on_output(model, record);
+    if (callbacks.on_checkpoint && o.checkpoint_every > 0 && record.step % o.checkpoint_every == 0 && !last)
+      callbacks.on_checkpoint(model, state);
     record.cutbacks = 0;
-    if (++successes >= o.successes_before_growth && dt < o.step) {
-      dt = std::min(o.step, dt * o.growth_factor);
-      successes = 0;
-    }
   }
   summary.completed = t >= o.end - tiny;
+  if (!summary.completed && callbacks.on_checkpoint) callbacks.on_checkpoint(model, state);
+  summary.steps = state.steps;
+  summary.newton_iterations_total = state.newton_iterations_total;
+  summary.newton_iterations_max_per_step = state.newton_iterations_max_per_step;
+  summary.cutbacks = state.cutbacks;
   summary.wall_seconds = elapsed();
+  summary.state = state;
   return summary;
 }
 

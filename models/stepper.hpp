@@ -4,6 +4,7 @@
 // steps (and at the start and the end), so that a long run writes its results as it goes. What a recipe
 // solves before the first step (the piezoelectric model's initial potential) is its own start hook.
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "models/solvers/newton.hpp"
@@ -16,6 +17,19 @@ enum class Prediction {
   Previous,  // v = v_{n-1}
 };
 
+// Where the time loop stands between two steps: enough, with the model's state (models/model_state.hpp),
+// to continue a run exactly as if it had not stopped (StepperOptions::resume).
+struct StepperState {
+  double time = 0;
+  double step_size = 0;      // the size the next attempt tries
+  int steps = 0;             // accepted steps so far
+  int successes = 0;         // good steps since the last cut-back or growth
+  int attempts = 0;          // step attempts so far, accepted and cut back
+  int cutbacks = 0;
+  int newton_iterations_total = 0;
+  int newton_iterations_max_per_step = 0;
+};
+
 struct StepperOptions {
   double start = 0;
   double end = 1;
@@ -25,6 +39,7 @@ struct StepperOptions {
   double growth_factor = 2;          // after `successes_before_growth` good steps, grow back toward `step`
   int successes_before_growth = 3;
   int output_every = 1;              // output callback every N accepted steps (and at the start and the end)
+  int checkpoint_every = 0;          // checkpoint callback every N accepted steps (0: none) and at a stop
   // Budgets (0: none). A run that hits one stops with a message saying which, its results so far written:
   // a cap on step attempts (accepted and cut back) bounds endless cut-back and regrowth cycles, and a
   // wall-time limit bounds a batch job.
@@ -34,6 +49,9 @@ struct StepperOptions {
   // run there, like a budget, with that reason in its message.
   std::function<std::string()> stop_requested;
   Prediction prediction = Prediction::Zero;
+  // Continue a stopped run from this state, the model restored to the same point: no start hook and no
+  // output of step 0 (they were done), and the budgets count on from the state's attempts.
+  std::optional<StepperState> resume;
 };
 
 struct StepRecord {
@@ -42,6 +60,7 @@ struct StepRecord {
   double dt = 0;
   int cutbacks = 0;  // failed attempts before this step was accepted
   NewtonReport newton;
+  StepperState state;  // after this step: what a checkpoint saves to continue from here
 };
 
 struct RunSummary {
@@ -52,6 +71,7 @@ struct RunSummary {
   int cutbacks = 0;
   double wall_seconds = 0;
   std::string message;
+  StepperState state;  // where the run ended (a checkpoint at a stop saves it)
 };
 
 struct StepperCallbacks {
@@ -61,6 +81,10 @@ struct StepperCallbacks {
   std::function<NewtonReport(Model&)> on_start;
   std::function<void(const Model&, const StepRecord&)> on_step;    // after each accepted step
   std::function<void(const Model&, const StepRecord&)> on_output;  // at output steps
+  // Every options.checkpoint_every accepted steps, after that step's outputs, and when the run stops
+  // before its end (a budget, a stop request, a step that failed at the floor), with the model back at the
+  // last accepted step: what it is given is what StepperOptions::resume continues from.
+  std::function<void(const Model&, const StepperState&)> on_checkpoint;
 };
 
 class Stepper {

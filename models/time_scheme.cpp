@@ -126,6 +126,17 @@ void BDF2::end_step(Model& model, double k) {
   freeze_displacement(model);
 }
 
+std::map<std::string, double> BDF2::history_state() const {
+  return {{"committed_steps", double(committed_)}, {"previous_step", previous_step_}};
+}
+
+void BDF2::restore_history_state(const std::map<std::string, double>& state) {
+  require(state.count("committed_steps") && state.count("previous_step"),
+          "bdf2: the saved state lacks committed_steps or previous_step");
+  committed_ = int(state.at("committed_steps"));
+  previous_step_ = state.at("previous_step");
+}
+
 void BDF2::freeze_displacement(Model& model) {
   model.set_affine(fields_.displacement, 0.0, {1.0, 0.0});
   if (acceleration_) model.set_affine(fields_.acceleration, 0.0, {0.0, 0.0});
@@ -197,6 +208,13 @@ void ThetaScheme::end_step(Model& model, double) {
   model.set_values(history(v), model.values(v));
   started_ = true;
   freeze_displacement(model);
+}
+
+std::map<std::string, double> ThetaScheme::history_state() const { return {{"started", started_ ? 1.0 : 0.0}}; }
+
+void ThetaScheme::restore_history_state(const std::map<std::string, double>& state) {
+  require(state.count("started"), "theta: the saved state lacks 'started'");
+  started_ = state.at("started") != 0;
 }
 
 void ThetaScheme::freeze_displacement(Model& model) {

@@ -23,6 +23,7 @@
 // dampers: its relative error (3e-5 at 20 steps, 1e-4 at 160) does not decrease with k there, and Newton
 // needs ~3 iterations a step instead of ~1.3.
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -58,6 +59,10 @@ class TimeScheme {
   virtual void end_step(Model& model, double k) = 0;
   // Makes u equal its history value u_{n} exactly (factor 0), e.g. to solve for the initial potential.
   virtual void freeze_displacement(Model& model) = 0;
+  // What the scheme knows beyond the model's history fields (e.g. BDF2's last step size), by name, so
+  // that a checkpoint restores a run exactly: restore_history_state(history_state()) changes nothing.
+  virtual std::map<std::string, double> history_state() const { return {}; }
+  virtual void restore_history_state(const std::map<std::string, double>& state) { (void)state; }
   const KinematicFields& fields() const { return fields_; }
 
  protected:
@@ -106,6 +111,8 @@ class BDF2 : public TimeScheme {
   bool last_step_was_backward_euler() const { return euler_step_; }
   // The largest step ratio k_n / k_{n-1} taken with the BDF2 formula (1 + sqrt 2: zero-stability).
   static double max_step_ratio();
+  std::map<std::string, double> history_state() const override;
+  void restore_history_state(const std::map<std::string, double>& state) override;
 
  private:
   bool acceleration_ = false;
@@ -144,6 +151,8 @@ class ThetaScheme : public TimeScheme {
   void end_step(Model& model, double k) override;
   void freeze_displacement(Model& model) override;
   bool last_step_was_backward_euler() const { return euler_step_; }
+  std::map<std::string, double> history_state() const override;
+  void restore_history_state(const std::map<std::string, double>& state) override;
 
  private:
   double theta_;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include "assembly/atomic_file.hpp"
 #include "assembly/error.hpp"
@@ -47,13 +48,55 @@ CsvLog::CsvLog(std::string path, std::vector<std::string> columns)
   write_header(out_, columns_);
   out_.flush();
   require(bool(out_), "CsvLog: writing the header of '", path_, "' failed (disk full?)");
+  complete_bytes_ = std::filesystem::file_size(path_);
+}
+
+CsvLog::CsvLog(std::string path, std::vector<std::string> columns, Continued)
+    : path_(std::move(path)), columns_(std::move(columns)) {}
+
+CsvLog CsvLog::continue_after(std::string path, std::vector<std::string> columns, int rows_kept) {
+  check_columns(path, columns);
+  std::ifstream in(path, std::ios::binary);
+  require(bool(in), "CsvLog: cannot continue '", path, "': it cannot be read");
+  std::ostringstream header;
+  write_header(header, columns);
+  std::string line;
+  std::uintmax_t bytes = 0;
+  int rows = -1;  // the header is row -1
+  while (rows < rows_kept && std::getline(in, line) && !in.eof()) {
+    if (rows == -1)
+      require(line + "\n" == header.str(), "CsvLog: cannot continue '", path, "': its header is '", line,
+              "', expected '", header.str().substr(0, header.str().size() - 1), "'");
+    bytes += line.size() + 1;
+    ++rows;
+  }
+  require(rows == rows_kept, "CsvLog: cannot continue '", path, "' after row ", rows_kept, ": it has only ",
+          std::max(rows, 0), " complete rows");
+  in.close();
+  std::filesystem::resize_file(path, bytes);
+  CsvLog log(std::move(path), std::move(columns), Continued{});
+  log.out_.open(log.path_, std::ios::app);
+  require(bool(log.out_), "CsvLog: cannot open '", log.path_, "' to continue it");
+  log.rows_written_ = rows_kept;
+  log.complete_bytes_ = bytes;
+  return log;
 }
 
 void CsvLog::row(const std::vector<double>& values) {
   check_row(path_, columns_.size(), values);
-  write_row(out_, values);
+  std::ostringstream text;
+  write_row(text, values);
+  out_ << text.str();
   out_.flush();
-  require(bool(out_), "CsvLog: writing row ", rows_written_ + 1, " of '", path_, "' failed (disk full?)");
+  if (!out_) {
+    // Part of the row may have reached the file: cut it off, so that the file ends with a whole row.
+    out_.close();
+    std::error_code ignored;
+    std::filesystem::resize_file(path_, complete_bytes_, ignored);
+    fail("CsvLog: writing row ", rows_written_ + 1, " of '", path_, "' failed (disk full?); the file keeps its ",
+         rows_written_, " complete rows");
+  }
+  complete_bytes_ += text.str().size();
   ++rows_written_;
 }
 

@@ -1,5 +1,6 @@
 #include "models/output/result_series.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,20 +22,51 @@ std::string ResultSeries::pvd_path() const {
   return (std::filesystem::path(directory_) / (basename_ + ".pvd")).string();
 }
 
-std::string ResultSeries::write(int step, double time, const VtuWriter& writer) {
-  require(step >= 0, "ResultSeries '", pvd_path(), "': step must be >= 0, got ", step);
-  require(std::isfinite(time), "ResultSeries '", pvd_path(), "': time of step ", step, " is not finite: ", time);
+std::string ResultSeries::file_name(int step) const {
   char number[16];
   std::snprintf(number, sizeof number, "%06d", step);
-  const std::string file = basename_ + "_" + number + ".vtu";
-  const std::string path = (std::filesystem::path(directory_) / file).string();
-  writer.write(path);
-  steps_[step] = {time, file};
+  return basename_ + "_" + number + ".vtu";
+}
 
+void ResultSeries::write_collection() const {
   std::vector<std::pair<double, std::string>> collection;
   for (const auto& [s, entry] : steps_) collection.push_back(entry);
   write_pvd(pvd_path(), collection);
+}
+
+std::string ResultSeries::write(int step, double time, const VtuWriter& writer) {
+  require(step >= 0, "ResultSeries '", pvd_path(), "': step must be >= 0, got ", step);
+  require(std::isfinite(time), "ResultSeries '", pvd_path(), "': time of step ", step, " is not finite: ", time);
+  const std::string file = file_name(step);
+  const std::string path = (std::filesystem::path(directory_) / file).string();
+  writer.write(path);
+  steps_[step] = {time, file};
+  write_collection();
   return path;
+}
+
+std::vector<std::pair<int, double>> ResultSeries::written() const {
+  std::vector<std::pair<int, double>> out;
+  for (const auto& [step, entry] : steps_) out.emplace_back(step, entry.first);
+  return out;
+}
+
+void ResultSeries::continue_from(const std::vector<std::pair<int, double>>& steps) {
+  steps_.clear();
+  for (const auto& [step, time] : steps) {
+    const std::string file = file_name(step);
+    require(std::filesystem::is_regular_file(std::filesystem::path(directory_) / file), "ResultSeries '", pvd_path(),
+            "': cannot continue: the file of step ", step, " (", file, ") is missing");
+    steps_[step] = {time, file};
+  }
+  const std::string prefix = basename_ + "_";
+  for (const auto& entry : std::filesystem::directory_iterator(directory_)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix) || !name.ends_with(".vtu")) continue;
+    const bool kept = std::any_of(steps_.begin(), steps_.end(), [&](const auto& s) { return s.second.second == name; });
+    if (!kept) std::filesystem::remove(entry.path());
+  }
+  write_collection();
 }
 
 }  // namespace pc

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "assembly/vtu_writer.hpp"
 
@@ -22,10 +23,20 @@ class ResultSeries {
 
   std::string pvd_path() const;
 
+  // The steps written so far, with their times (what a checkpoint keeps of the series).
+  std::vector<std::pair<int, double>> written() const;
+  // Continues the series of a resumed run: these steps (a checkpoint's written()) are taken as written;
+  // every other <basename>_*.vtu in the directory (computed after the checkpoint, or foreign) is removed,
+  // and the collection is rewritten.
+  void continue_from(const std::vector<std::pair<int, double>>& steps);
+
  private:
   std::string directory_;
   std::string basename_;
   std::map<int, std::pair<double, std::string>> steps_;  // step -> (time, file name relative to the .pvd)
+
+  std::string file_name(int step) const;
+  void write_collection() const;
 };
 
 }  // namespace pc

@@ -184,6 +184,7 @@ void require_points_in_mesh(const PointLocator& locator, const Json& at, const s
 Scene load_scene(const Json& json, const std::string& directory) {
   Scene scene;
   scene.json = json;
+  scene.directory = directory;
   Problems problems;
   scene.name = problems.check([&] {
     const std::string name = json.at("name").as_string();
@@ -444,9 +445,10 @@ Scene load_scene(const Json& json, const std::string& directory) {
     const auto o = json.find("output");
     if (!o) return;
     require_known_keys(*o, {"vtu_every", "progress_every", "probes", "grid", "slip_threshold", "phi_f_sweep",
-                            "sweep_steps"});
+                            "sweep_steps", "checkpoint_every"});
     SceneOutput& out = scene.output;
     if (const auto x = o->find("vtu_every")) out.vtu_every = x->as_int_at_least(1);
+    if (const auto x = o->find("checkpoint_every")) out.checkpoint_every = x->as_int_at_least(0);
     if (const auto x = o->find("progress_every")) out.progress_every = x->as_int_at_least(1);
     if (const auto p = o->find("probes")) {
       require_known_keys(*p, {"corner", "center"});
@@ -497,7 +499,10 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
     const std::string key = o.substr(0, eq);
     json.set_path(key, parse_json_value_from_cli(o.substr(eq + 1), "--set " + key), Json::NewKeys::allow);
   }
-  return load_scene(json, std::filesystem::path(path).parent_path().string());
+  Scene scene = load_scene(json, std::filesystem::path(path).parent_path().string());
+  scene.file = path;
+  scene.overrides = overrides;
+  return scene;
 }
 
 std::vector<std::array<double, 3>> SceneGrid::points() const {

@@ -30,6 +30,7 @@ struct SceneGrid {
 struct SceneOutput {
   int vtu_every = 10;
   int progress_every = 20;
+  int checkpoint_every = 10;  // a checkpoint (for --resume) every N steps and at a stop; 0: only at a stop
   std::array<double, 3> corner{}, center{};  // probes of history.csv and summary.json
   SceneGrid grid;
   double slip_threshold = 0;                 // m/s: a contact node with |v_tau| above it slides
@@ -39,6 +40,9 @@ struct SceneOutput {
 
 struct Scene {
   Json json;  // the scene as read, after --set overrides
+  std::string file;                    // the scene file (load_scene_file), and ...
+  std::vector<std::string> overrides;  // ... the --set overrides applied to it
+  std::string directory;               // what relative paths in the scene (gmsh file, plugins) resolve against
   std::string name;
   std::string mesh_description;  // e.g. "60 x 20 triangle, P1"
   int nx = 0, ny = 0;            // structured meshes only

@@ -16,10 +16,13 @@
 #include "assembly/error.hpp"
 #include "assembly/point_locator.hpp"
 #include "bricks/law_registry.hpp"
+#include "models/model_state.hpp"
 #include "models/output/boundary_table.hpp"
+#include "models/output/checkpoint.hpp"
 #include "models/output/csv_log.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/scene/interrupts.hpp"
+#include "models/scene/run_manifest.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/initial_potential.hpp"
 
@@ -210,7 +213,86 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
 }
 
 FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, int steps_override) {
+  FoundationRunOptions options;
+  options.directory = dir;
+  options.progress = progress;
+  options.steps_override = steps_override;
+  return run(options);
+}
+
+namespace {
+
+// The runner's own totals, kept in a checkpoint so that a resumed run's summary counts the whole run.
+void save_totals(const FoundationRunResult& r, double wall_seconds, Checkpoint& c) {
+  c.numbers["run:assembly_seconds"] = r.assembly_seconds;
+  c.numbers["run:factorize_seconds"] = r.factorize_seconds;
+  c.numbers["run:solve_seconds"] = r.solve_seconds;
+  c.numbers["run:condensation_seconds"] = r.condensation_seconds;
+  c.numbers["run:factorizations"] = r.factorizations;
+  c.numbers["run:wall_seconds"] = wall_seconds;
+}
+
+void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_seconds) {
+  r.assembly_seconds = c.number("run:assembly_seconds");
+  r.factorize_seconds = c.number("run:factorize_seconds");
+  r.solve_seconds = c.number("run:solve_seconds");
+  r.condensation_seconds = c.number("run:condensation_seconds");
+  r.factorizations = int(c.number("run:factorizations"));
+  wall_seconds = c.number("run:wall_seconds");
+}
+
+void save_stepper_state(const StepperState& s, Checkpoint& c) {
+  c.numbers["stepper:time"] = s.time;
+  c.numbers["stepper:step_size"] = s.step_size;
+  c.numbers["stepper:steps"] = s.steps;
+  c.numbers["stepper:successes"] = s.successes;
+  c.numbers["stepper:attempts"] = s.attempts;
+  c.numbers["stepper:cutbacks"] = s.cutbacks;
+  c.numbers["stepper:newton_iterations_total"] = s.newton_iterations_total;
+  c.numbers["stepper:newton_iterations_max_per_step"] = s.newton_iterations_max_per_step;
+}
+
+StepperState restore_stepper_state(const Checkpoint& c) {
+  StepperState s;
+  s.time = c.number("stepper:time");
+  s.step_size = c.number("stepper:step_size");
+  s.steps = int(c.number("stepper:steps"));
+  s.successes = int(c.number("stepper:successes"));
+  s.attempts = int(c.number("stepper:attempts"));
+  s.cutbacks = int(c.number("stepper:cutbacks"));
+  s.newton_iterations_total = int(c.number("stepper:newton_iterations_total"));
+  s.newton_iterations_max_per_step = int(c.number("stepper:newton_iterations_max_per_step"));
+  return s;
+}
+
+// The series' written steps as two vectors of the checkpoint.
+void save_series(const ResultSeries& series, Checkpoint& c) {
+  const auto written = series.written();
+  Eigen::VectorXd steps(Eigen::Index(written.size())), times(Eigen::Index(written.size()));
+  for (size_t i = 0; i < written.size(); ++i) {
+    steps[Eigen::Index(i)] = written[i].first;
+    times[Eigen::Index(i)] = written[i].second;
+  }
+  c.vectors["series:steps"] = steps;
+  c.vectors["series:times"] = times;
+}
+
+std::vector<std::pair<int, double>> restore_series(const Checkpoint& c) {
+  const Eigen::VectorXd& steps = c.vector("series:steps");
+  const Eigen::VectorXd& times = c.vector("series:times");
+  require(steps.size() == times.size(), "checkpoint: the VTU series' steps and times differ in number");
+  std::vector<std::pair<int, double>> written;
+  for (Eigen::Index i = 0; i < steps.size(); ++i) written.emplace_back(int(steps[i]), times[i]);
+  return written;
+}
+
+}  // namespace
+
+FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) {
   const auto start = std::chrono::steady_clock::now();
+  const std::string& dir = run_options.directory;
+  const bool progress = run_options.progress;
+  const int steps_override = run_options.steps_override;
   const Scene& scene = scene_;
   const SceneFoundation& foundation = foundation_;
   PiezoContactModel& built = built_;
@@ -242,9 +324,13 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
   options.output_every = scene.output.vtu_every;
   options.max_attempts = scene.max_attempts;
   options.max_wall_seconds = scene.max_wall_seconds;
+  options.checkpoint_every = dir.empty() ? 0 : scene.output.checkpoint_every;
   options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");
+  const std::vector<std::string> history_columns = {"t", "uy_corner", "phi_center", "newton_iterations"};
+  const std::string checkpoint_path = dir + "/checkpoint.bin";
+  double earlier_wall_seconds = 0;  // of the run's part before a resume
 
   std::unique_ptr<CsvLog> history;
   std::unique_ptr<ResultSeries> series;
@@ -253,9 +339,24 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     std::filesystem::create_directories(dir, error);
     require(!error && std::filesystem::is_directory(dir), "cannot create the output directory '", dir, "' (--out): ",
             error ? error.message() : "a file of that name is in the way");
-    history = std::make_unique<CsvLog>(dir + "/history.csv",
-                                       std::vector<std::string>{"t", "uy_corner", "phi_center", "newton_iterations"});
     series = std::make_unique<ResultSeries>(dir, scene.name);
+    if (run_options.resume && std::filesystem::exists(checkpoint_path)) {
+      const Checkpoint checkpoint = read_checkpoint(checkpoint_path);
+      require(checkpoint.text("foundation") == foundation.name, "--resume: '", checkpoint_path,
+              "' is the checkpoint of the foundation '", checkpoint.text("foundation"), "'");
+      restore_model_state(m, *built.scheme, checkpoint);
+      options.resume = restore_stepper_state(checkpoint);
+      restore_totals(checkpoint, result, earlier_wall_seconds);
+      history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_columns, options.resume->steps));
+      series->continue_from(restore_series(checkpoint));
+      if (progress)
+        std::printf("  [%s] resumed at step %d, t = %.6g s, from %s\n", foundation.name.c_str(), options.resume->steps,
+                    options.resume->time, checkpoint_path.c_str());
+    } else {
+      history = std::make_unique<CsvLog>(dir + "/history.csv", history_columns);
+      series->continue_from({});  // a series of an earlier run in this folder is not mixed in
+      std::filesystem::remove(checkpoint_path, error);
+    }
   }
   StepperCallbacks callbacks;
   callbacks.on_start = [&](Model& model) { return solve_initial_potential(model, *built.scheme, newton); };
@@ -268,9 +369,15 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
   };
   // What the run has done, for its summary if a callback stops it (a non-finite result).
   RunSummary done;
+  if (options.resume) {
+    done.steps = options.resume->steps;
+    done.newton_iterations_total = options.resume->newton_iterations_total;
+    done.newton_iterations_max_per_step = options.resume->newton_iterations_max_per_step;
+  }
   auto when = [](const StepRecord& r) {
     return r.step == 0 ? message("the initial state (t = ", r.time, ")") : message("step ", r.step, " (t = ", r.time, ")");
   };
+  const double first_time = options.resume ? options.resume->time : 0.0;  // of this process's part of the run
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
     add_phases(r.newton);
     done.steps = r.step;
@@ -280,7 +387,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     const std::vector<double> row = {r.time, probe(model, locator, "u", 1, scene.output.corner),
                                      electric ? probe(model, locator, "phi", 0, scene.output.center) : 0.0,
                                      double(r.newton.iterations)};
-    require_finite_rows(when(r) + ": history.csv", {"t", "uy_corner", "phi_center", "newton_iterations"}, {row});
+    require_finite_rows(when(r) + ": history.csv", history_columns, {row});
     if (history) history->row(row);
     if (progress && (r.step % scene.output.progress_every == 0 || r.step == 1)) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -295,7 +402,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
                   residuals.c_str(),
                   r.newton.diagnostics.count("contact_nodes_in_compression") ? r.newton.diagnostics.at("contact_nodes_in_compression") : 0.0,
                   r.newton.diagnostics.count("contact_nodes_in_slip") ? r.newton.diagnostics.at("contact_nodes_in_slip") : 0.0,
-                  eta(elapsed, r.time / scene.end_time).c_str());
+                  eta(elapsed, (r.time - first_time) / (scene.end_time - first_time)).c_str());
       std::fflush(stdout);
     }
   };
@@ -310,6 +417,19 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
     series->write(r.step, r.time, writer);
   };
+  const double run_start_wall = earlier_wall_seconds;
+  if (!dir.empty())
+    callbacks.on_checkpoint = [&](const Model& model, const StepperState& state) {
+      Checkpoint checkpoint;
+      checkpoint.texts["foundation"] = foundation.name;
+      save_model_state(model, *built.scheme, checkpoint);
+      save_stepper_state(state, checkpoint);
+      const double wall = run_start_wall + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      save_totals(result, wall, checkpoint);
+      save_series(*series, checkpoint);
+      write_checkpoint(checkpoint_path, checkpoint);
+      if (run_options.after_checkpoint) run_options.after_checkpoint();
+    };
 
   // A non-finite state or result stops the run where it first appears, with a message saying where.
   bool stopped_in_callback = false;
@@ -320,6 +440,8 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     result.newton_iterations_total = run.newton_iterations_total;
     result.newton_iterations_max_per_step = run.newton_iterations_max_per_step;
     result.message = run.message;
+    // A completed run has nothing to resume: its checkpoint would only be mistaken for a stopped run's.
+    if (run.completed && !dir.empty()) std::filesystem::remove(checkpoint_path);
   } catch (const Error& e) {
     stopped_in_callback = true;
     result.completed = false;
@@ -361,59 +483,134 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
       result.completed = false;
       result.message += (result.message.empty() ? "" : "; ") + message("the result ", name, " is not finite");
     }
-  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_seconds =
+      earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!dir.empty()) write_summary(scene, dir, result, steps);
   return result;
 }
 
+namespace {
+
+void report_folder_cleaning(const RunManifest& manifest, bool progress) {
+  if (progress && !manifest.removed().empty())
+    std::printf("removed %zu files of an earlier run from '%s'\n", manifest.removed().size(), manifest.directory().c_str());
+  // Files that are not the run's are reported whatever --quiet says: they must not pass for results.
+  if (const auto& foreign = manifest.not_of_this_run(); !foreign.empty()) {
+    std::fflush(stdout);
+    std::fprintf(stderr,
+                 "warning: '%s' holds %zu files that are not of this run (e.g. '%s'); they are left alone and listed in "
+                 "manifest.json under not_of_this_run\n",
+                 manifest.directory().c_str(), foreign.size(), foreign.front().c_str());
+  }
+}
+
+const char* const sweep_part = "sweep_phi_f";
+
+}  // namespace
+
 bool run_scene(const Scene& scene, const SceneRunOptions& options) {
   bool all_completed = true;
+  std::string stop_reason;
   const std::string& out = options.output_directory;
   // Before the first step: a directory that cannot be written or is in use costs no computing.
   std::unique_ptr<OutputDirectoryLock> lock;
-  if (!out.empty()) lock = std::make_unique<OutputDirectoryLock>(out);
-  for (const SceneFoundation& f : scene.foundations) {
-    if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), f.name) == options.only.end())
-      continue;
-    if (interrupt_reason()) break;  // an interrupted run starts nothing new
-    if (options.progress) std::printf("%s, %s foundation: %s\n", scene.name.c_str(), f.name.c_str(), scene.mesh_description.c_str());
-    const FoundationRunResult r = run_foundation(scene, f, out.empty() ? "" : out + "/" + f.name, options.progress);
-    all_completed = all_completed && r.completed;
-    // The stop reason goes to stderr whatever --quiet says: a failed run is never silent.
-    if (!r.completed) {
-      std::fflush(stdout);
-      std::fprintf(stderr, "%s, %s foundation: STOPPED after %d steps: %s\n", scene.name.c_str(), f.name.c_str(),
-                   r.steps, r.message.empty() ? "(no message)" : r.message.c_str());
-    }
-    if (options.progress)
-      std::printf("  %s: %s in %.2f s, %d Newton iterations (max %d per step); max|ux| = %.4g m, max|uy| = %.4g m, "
-                  "phi in [%.4g, %.4g] V%s\n",
-                  f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.newton_iterations_total,
-                  r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy, r.phi_min, r.phi_max,
-                  r.message.empty() ? "" : ("; " + r.message).c_str());
+  std::unique_ptr<RunManifest> manifest;
+  if (!out.empty()) {
+    lock = std::make_unique<OutputDirectoryLock>(out);
+    manifest = std::make_unique<RunManifest>(options.resume ? RunManifest::resume(out, scene)
+                                                            : RunManifest::start(out, scene));
+    report_folder_cleaning(*manifest, options.progress);
+  } else {
+    require(!options.resume, "--resume needs the output directory (--out) of the run to resume");
   }
-
-  // Figure 5: final displacement against the foundation voltage, from one model of the first foundation
-  // whose law has a phi_f: each run changes that constant only.
-  const auto swept = std::find_if(scene.foundations.begin(), scene.foundations.end(), [](const SceneFoundation& f) {
-    return find_parameter(foundation_law_registry().at(f.law.name, "foundation").parameters, "phi_f") != nullptr;
-  });
-  if (options.sweep && !scene.output.phi_f_sweep.empty() && swept != scene.foundations.end() && !out.empty() &&
-      !interrupt_reason()) {
-    FoundationRun sweep(scene, *swept);
-    std::vector<std::vector<double>> rows;
-    for (double phi_f : scene.output.phi_f_sweep) {
-      sweep.model().set_constant("phi_f", phi_f);
-      const FoundationRunResult r = sweep.run("", false, scene.output.sweep_steps);
-      all_completed = all_completed && r.completed;
-      if (!r.completed)
-        std::fprintf(stderr, "%s, sweep phi_f = %g V: STOPPED: %s\n", scene.name.c_str(), phi_f, r.message.c_str());
-      rows.push_back({phi_f, r.max_abs_ux, r.max_abs_uy, r.ux_corner, r.uy_corner});
+  auto stopped = [&](const std::string& part, const std::string& reason) {
+    all_completed = false;
+    if (stop_reason.empty()) stop_reason = part + ": " + reason;
+  };
+  // Whatever stops the run, its manifest says so: an error (a full disk) is recorded before it goes on up.
+  try {
+    for (const SceneFoundation& f : scene.foundations) {
+      if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), f.name) == options.only.end())
+        continue;
+      if (const char* reason = interrupt_reason()) {  // an interrupted run starts nothing new
+        stopped(f.name, message("not started: ", reason));
+        break;
+      }
+      if (manifest && options.resume && manifest->part_state(f.name) == "completed") {
+        if (options.progress) std::printf("%s, %s foundation: completed before, kept\n", scene.name.c_str(), f.name.c_str());
+        continue;
+      }
+      if (options.progress) std::printf("%s, %s foundation: %s\n", scene.name.c_str(), f.name.c_str(), scene.mesh_description.c_str());
+      FoundationRunOptions run;
+      if (manifest) {
+        manifest->set_part(f.name, "running");
+        run.directory = out + "/" + f.name;
+        run.after_checkpoint = [&] { manifest->save(); };
+      }
+      run.progress = options.progress;
+      run.resume = options.resume;
+      const FoundationRunResult r = FoundationRun(scene, f).run(run);
+      if (manifest) manifest->set_part(f.name, r.completed ? "completed" : "stopped", r.message);
+      // The stop reason goes to stderr whatever --quiet says: a failed run is never silent.
+      if (!r.completed) {
+        stopped(f.name, r.message.empty() ? "(no message)" : r.message);
+        std::fflush(stdout);
+        std::fprintf(stderr, "%s, %s foundation: STOPPED after %d steps: %s\n", scene.name.c_str(), f.name.c_str(),
+                     r.steps, r.message.empty() ? "(no message)" : r.message.c_str());
+      }
       if (options.progress)
-        std::printf("  sweep phi_f = %g V: max|ux| = %.4g m, max|uy| = %.4g m\n", phi_f, r.max_abs_ux, r.max_abs_uy);
-      write_finite_csv(out + "/sweep_phi_f.csv", {"phi_f", "max_abs_ux", "max_abs_uy", "ux_corner", "uy_corner"}, rows);
+        std::printf("  %s: %s in %.2f s, %d Newton iterations (max %d per step); max|ux| = %.4g m, max|uy| = %.4g m, "
+                    "phi in [%.4g, %.4g] V%s\n",
+                    f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.newton_iterations_total,
+                    r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy, r.phi_min, r.phi_max,
+                    r.message.empty() ? "" : ("; " + r.message).c_str());
     }
+
+    // Figure 5: final displacement against the foundation voltage, from one model of the first foundation
+    // whose law has a phi_f: each run changes that constant only. A resumed run that stopped in the sweep
+    // runs it again (its runs are short and write one table at the end).
+    const auto swept = std::find_if(scene.foundations.begin(), scene.foundations.end(), [](const SceneFoundation& f) {
+      return find_parameter(foundation_law_registry().at(f.law.name, "foundation").parameters, "phi_f") != nullptr;
+    });
+    const bool sweep_done_before = manifest && options.resume && manifest->part_state(sweep_part) == "completed";
+    if (options.sweep && !scene.output.phi_f_sweep.empty() && swept != scene.foundations.end() && !out.empty() &&
+        !sweep_done_before) {
+      if (const char* reason = interrupt_reason()) {
+        stopped(sweep_part, message("not started: ", reason));
+      } else {
+        manifest->set_part(sweep_part, "running");
+        FoundationRun sweep(scene, *swept);
+        std::vector<std::vector<double>> rows;
+        bool sweep_completed = true;
+        std::string sweep_message;
+        for (double phi_f : scene.output.phi_f_sweep) {
+          sweep.model().set_constant("phi_f", phi_f);
+          const FoundationRunResult r = sweep.run("", false, scene.output.sweep_steps);
+          if (!r.completed) {
+            sweep_completed = false;
+            sweep_message = message("phi_f = ", phi_f, " V: ", r.message);
+            stopped(sweep_part, sweep_message);
+            std::fprintf(stderr, "%s, sweep phi_f = %g V: STOPPED: %s\n", scene.name.c_str(), phi_f, r.message.c_str());
+          }
+          rows.push_back({phi_f, r.max_abs_ux, r.max_abs_uy, r.ux_corner, r.uy_corner});
+          if (options.progress)
+            std::printf("  sweep phi_f = %g V: max|ux| = %.4g m, max|uy| = %.4g m\n", phi_f, r.max_abs_ux, r.max_abs_uy);
+          write_finite_csv(out + "/sweep_phi_f.csv", {"phi_f", "max_abs_ux", "max_abs_uy", "ux_corner", "uy_corner"}, rows);
+        }
+        manifest->set_part(sweep_part, sweep_completed ? "completed" : "stopped", sweep_message);
+      }
+    }
+  } catch (const std::exception& e) {
+    if (manifest) {
+      try {
+        manifest->finish(false, e.what());
+      } catch (const std::exception&) {
+        // The error that stopped the run is the one to report.
+      }
+    }
+    throw;
   }
+  if (manifest) manifest->finish(all_completed, stop_reason);
   return all_completed;
 }
 

@@ -6,8 +6,9 @@
 //   grid.csv       x, y, ux, uy, phi sampled on the scene's output grid (x fastest), final time
 //   final_nodes.csv, final_cells.csv   the final state on the mesh (for the figures)
 //   <name>.pvd + <name>_<step>.vtu     ParaView time series, every output.vtu_every steps and step 0
+//   checkpoint.bin  the state to continue from (run --resume), every output.checkpoint_every steps
 // and, when the scene asks for it, OUT/sweep_phi_f.csv: the final displacement against the foundation
-// voltage (conductive foundation), for Figure 5.
+// voltage (conductive foundation), for Figure 5, and OUT/manifest.json (models/scene/run_manifest.hpp).
 #include <functional>
 #include <string>
 
@@ -21,6 +22,21 @@ struct SceneRunOptions {
   bool progress = true;                 // progress lines on stdout
   std::vector<std::string> only;        // run only these foundations (empty: all)
   bool sweep = true;                    // run the phi_f sweep if the scene has one
+  // Continue the run recorded in the directory's manifest.json (same scene): completed parts are kept,
+  // a stopped or killed one continues from its last checkpoint (or starts again if it has none).
+  bool resume = false;
+};
+
+// How one run of a foundation writes and where it starts.
+struct FoundationRunOptions {
+  std::string directory;   // empty: nothing is written (studies, tests)
+  bool progress = true;
+  int steps_override = 0;  // > 0 replaces the scene's number of steps
+  // Continue from directory/checkpoint.bin (written every output.checkpoint_every steps and at a stop):
+  // history.csv keeps its rows up to the checkpoint, the VTU series its steps, and the run goes on as the
+  // uninterrupted one would have, to the last digit. Without a checkpoint the run starts from t = 0.
+  bool resume = false;
+  std::function<void()> after_checkpoint;  // e.g. the manifest's update
 };
 
 struct FoundationRunResult {
@@ -45,6 +61,7 @@ struct FoundationRunResult {
 class FoundationRun {
  public:
   FoundationRun(const Scene& scene, const SceneFoundation& foundation);
+  FoundationRunResult run(const FoundationRunOptions& options);
   // With an empty directory nothing is written (studies, tests); steps_override > 0 replaces the scene's.
   FoundationRunResult run(const std::string& directory, bool progress, int steps_override = 0);
   Model& model() { return *built_.model; }

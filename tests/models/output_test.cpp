@@ -1,7 +1,10 @@
 // Output of a run: the VTU/PVD result series and the CSV tables are read back as text; the derived
 // piezoelectric fields are checked on linear fields, for which the cell values are exact.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cmath>
 #include <cstdlib>
@@ -146,6 +149,57 @@ TEST_F(OutputTest, CsvLogWrongValueCountThrowsNamingFileAndCounts) {
   expect_error_containing([&] { log.row({}); }, {path, "0 values", "2 columns"});
   EXPECT_EQ(read_lines(path).size(), 2u);  // the header and the one good row
   EXPECT_EQ(log.rows_written(), 1);
+}
+
+// A resumed run continues its history after the checkpoint's rows: later rows (computed after the
+// checkpoint by the run that was killed) are cut off, and a file of other columns is refused.
+TEST_F(OutputTest, CsvLogContinuesAfterTheRowsKept) {
+  const std::string path = (directory_ / "log.csv").string();
+  {
+    CsvLog log(path, {"t", "x"});
+    for (int k = 0; k < 5; ++k) log.row({double(k), 10.0 * k});
+  }
+  std::ofstream(path, std::ios::app) << "5,5";  // a row cut short by a kill
+  {
+    CsvLog log = CsvLog::continue_after(path, {"t", "x"}, 3);
+    EXPECT_EQ(log.rows_written(), 3);
+    log.row({3.5, 35});
+  }
+  const auto lines = read_lines(path);
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[3], "2,20");
+  EXPECT_EQ(lines[4], "3.5,35");
+  expect_error_containing([&] { CsvLog::continue_after(path, {"t", "y"}, 1); }, {path, "its header is 't,x'"});
+  expect_error_containing([&] { CsvLog::continue_after(path, {"t", "x"}, 9); }, {path, "only 4 complete rows"});
+}
+
+// A full disk: a row that does not fit is cut off again, so the file ends with a whole row. The file-size
+// limit (RLIMIT_FSIZE, with SIGXFSZ ignored) makes the write fail part-way, as a full disk does.
+TEST_F(OutputTest, ARowThatCannotBeWrittenWholeIsCutOff) {
+  const std::string path = (directory_ / "log.csv").string();
+  CsvLog log(path, {"t", "value"});
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limited = saved;
+  limited.rlim_cur = 100;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
+  std::string error;
+  int rows = 0;
+  try {
+    for (; rows < 100; ++rows) log.row({1.0 / 3.0, 2.0 / 3.0});
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_NE(error.find("disk full"), std::string::npos) << error;
+  EXPECT_NE(error.find(std::to_string(rows) + " complete rows"), std::string::npos) << error;
+  const std::string text = read_text(path);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n') << "a half-written row";
+  EXPECT_EQ(read_lines(path).size(), size_t(rows) + 1);
+  EXPECT_LE(text.size(), 100u);
 }
 
 TEST_F(OutputTest, CsvColumnNamesMustBePlain) {

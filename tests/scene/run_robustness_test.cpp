@@ -1,6 +1,8 @@
 // The runner against hostile input and conditions (issue 11): non-finite results stop the run and are
 // never written, an unwritable or empty --out is refused before the first step with a clear message, a
-// second run into a folder in use is refused, and a stopped run says why on stderr even with --quiet.
+// second run into a folder in use is refused, a stopped run says why on stderr even with --quiet, a rerun
+// never mixes its files with an earlier run's, and a killed or stopped run resumes to the very results of
+// an uninterrupted one.
 // The runner is run as a user runs it, as a separate process (PIEZOCONTACT_RUNNER).
 #include <gtest/gtest.h>
 
@@ -9,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -183,6 +186,117 @@ TEST_F(RunRobustness, ASecondRunIntoAFolderInUseIsRefused) {
   // Once the first run is gone (however it ended), the folder is free again.
   const Outcome third = run("run " + kScene + kSmall + " --only insulated --out " + quoted(out.string()) + " --quiet");
   EXPECT_EQ(third.status, 0) << third.err;
+}
+
+// ---- manifest, stale files, resume (case 5) ---------------------------------------------------------
+
+// The files of a result folder, by relative path (the lock and the manifest left out).
+std::vector<std::string> files_of(const std::filesystem::path& dir) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name != ".piezocontact.lock" && name != "manifest.json")
+      files.push_back(std::filesystem::relative(entry.path(), dir).string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Two result folders hold the same files with the same contents, the run times in summary.json aside.
+void expect_same_results(const std::filesystem::path& a, const std::filesystem::path& b) {
+  ASSERT_EQ(files_of(a), files_of(b));
+  for (const std::string& f : files_of(a)) {
+    std::string x = read_text(a / f), y = read_text(b / f);
+    if (f.ends_with("summary.json")) {
+      const std::regex wall("\"wall_s_total\": [^,]*,");
+      x = std::regex_replace(x, wall, "");
+      y = std::regex_replace(y, wall, "");
+    }
+    EXPECT_TRUE(x == y) << f << " differs";
+  }
+}
+
+const std::string kResumable = " --only conductive --no-sweep --set output.vtu_every=50 --quiet";
+
+TEST_F(RunRobustness, AKilledRunResumesToTheSameResults) {
+  const auto whole = directory_ / "whole", killed = directory_ / "killed";
+  const std::string steps = " --set time.steps=3000 --set output.checkpoint_every=25";
+  const Outcome reference = run("run " + kScene + steps + kResumable + " --out " + quoted(whole.string()));
+  ASSERT_EQ(reference.status, 0) << reference.err;
+
+  const pid_t pid = start_long_run(killed, directory_ / "killed.txt",
+                                   {"--set", "time.steps=3000", "--set", "time.max_wall_seconds=0", "--set",
+                                    "output.checkpoint_every=25", "--only", "conductive", "--no-sweep", "--set",
+                                    "output.vtu_every=50", "--quiet"});
+  ASSERT_GE(pid, 0);
+  wait_for(killed / "conductive" / "history.csv", 300 * 60);  // some 300 steps in
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed: nothing to resume";
+  const std::string manifest = read_text(killed / "manifest.json");
+  EXPECT_NE(manifest.find("\"state\": \"running\""), std::string::npos) << manifest;
+  EXPECT_TRUE(std::filesystem::exists(killed / "conductive" / "checkpoint.bin"));
+  EXPECT_FALSE(std::filesystem::exists(killed / "conductive" / "summary.json"));
+
+  const Outcome resumed = run("run " + kScene + steps + kResumable + " --resume --out " + quoted(killed.string()));
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  expect_same_results(whole, killed);
+  const std::string after = read_text(killed / "manifest.json");
+  EXPECT_NE(after.find("\"state\": \"completed\""), std::string::npos) << after;
+  EXPECT_NE(after.find("\"resumes\": 1"), std::string::npos) << after;
+}
+
+// A run stopped by its budget writes a checkpoint at the stop; resumed with a larger budget (budgets do not
+// change results, so the scene is the same), it ends as the uninterrupted run.
+TEST_F(RunRobustness, ARunStoppedByItsBudgetResumesToTheSameResults) {
+  const auto whole = directory_ / "whole", stopped = directory_ / "stopped";
+  const std::string scene = kScene + " --set mesh.nx=12 --set mesh.ny=4 --set time.steps=40" + kResumable;
+  ASSERT_EQ(run("run " + scene + " --out " + quoted(whole.string())).status, 0);
+  const Outcome part = run("run " + scene + " --set time.max_attempts=17 --out " + quoted(stopped.string()));
+  EXPECT_EQ(part.status, 1);
+  EXPECT_NE(part.err.find("max_attempts"), std::string::npos) << part.err;
+  const Outcome rest = run("run " + scene + " --resume --out " + quoted(stopped.string()));
+  ASSERT_EQ(rest.status, 0) << rest.err;
+  expect_same_results(whole, stopped);
+}
+
+// A rerun into the folder of an earlier, longer run: none of the earlier run's files survive (its VTUs
+// past the new run's steps, its summary), and a file that is no run's is kept and reported.
+TEST_F(RunRobustness, ARerunNeverMixesItsFilesWithAnEarlierRunsAndFlagsForeignOnes) {
+  const auto out = directory_ / "out", fresh = directory_ / "fresh";
+  const std::string small = kScene + " --set mesh.nx=6 --set mesh.ny=2 --only conductive --no-sweep --quiet";
+  ASSERT_EQ(run("run " + small + " --set time.steps=20 --set output.vtu_every=1 --out " + quoted(out.string())).status, 0);
+  ASSERT_TRUE(std::filesystem::exists(out / "conductive" / "paper2d_000020.vtu"));
+  // What a run of a version without a manifest would have left, and a file of the user's.
+  std::filesystem::remove(out / "manifest.json");
+  std::ofstream(out / "conductive" / "paper2d_000077.vtu") << "stale";
+  std::ofstream(out / "conductive" / "notes.txt") << "mine";
+
+  const Outcome rerun = run("run " + small + " --set time.steps=2 --out " + quoted(out.string()));
+  ASSERT_EQ(rerun.status, 0) << rerun.err;
+  EXPECT_NE(rerun.err.find("not of this run"), std::string::npos) << rerun.err;
+  EXPECT_NE(rerun.err.find("conductive/notes.txt"), std::string::npos) << rerun.err;
+  EXPECT_EQ(read_text(out / "conductive" / "notes.txt"), "mine");
+  const std::string manifest = read_text(out / "manifest.json");
+  EXPECT_NE(manifest.find("\"not_of_this_run\": [\n    \"conductive/notes.txt\"\n  ]"), std::string::npos) << manifest;
+  std::filesystem::remove(out / "conductive" / "notes.txt");
+  ASSERT_EQ(run("run " + small + " --set time.steps=2 --out " + quoted(fresh.string())).status, 0);
+  expect_same_results(fresh, out);  // exactly a fresh run's files
+  EXPECT_EQ(manifest.find("paper2d_000020.vtu"), std::string::npos) << manifest;
+}
+
+TEST_F(RunRobustness, ResumeIsRefusedWithoutARunOrForAnotherScene) {
+  const auto out = directory_ / "out";
+  const std::string small = kScene + kSmall + " --only insulated --quiet";
+  const Outcome nothing = run("run " + small + " --resume --out " + quoted(out.string()));
+  EXPECT_EQ(nothing.status, 1);
+  EXPECT_NE(nothing.err.find("has no manifest.json"), std::string::npos) << nothing.err;
+  ASSERT_EQ(run("run " + small + " --set time.max_attempts=1 --out " + quoted(out.string())).status, 1);
+  const Outcome other = run("run " + small + " --set mesh.nx=8 --resume --out " + quoted(out.string()));
+  EXPECT_EQ(other.status, 1);
+  EXPECT_NE(other.err.find("is of another scene"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("--set mesh.nx=6"), std::string::npos) << other.err;
 }
 
 }  // namespace

@@ -1,0 +1,58 @@
+#include "models/model_state.hpp"
+
+#include "assembly/error.hpp"
+
+namespace pc {
+namespace {
+
+const std::string field_prefix = "field:", affine_prefix = "affine:", scheme_prefix = "scheme:";
+
+}  // namespace
+
+void save_model_state(const Model& model, const TimeScheme& scheme, Checkpoint& checkpoint) {
+  checkpoint.numbers["model:time"] = model.time();
+  for (const std::string& name : model.field_names()) {
+    if (model.field_kind(name) != FieldKind::Affine) {
+      checkpoint.vectors[field_prefix + name] = model.values(name);
+      continue;
+    }
+    const std::vector<double> coefficients = model.affine_coefficients(name);
+    Eigen::VectorXd map(Eigen::Index(coefficients.size() + 1));
+    map[0] = model.affine_factor(name);
+    for (size_t i = 0; i < coefficients.size(); ++i) map[Eigen::Index(i + 1)] = coefficients[i];
+    checkpoint.vectors[affine_prefix + name] = map;
+  }
+  checkpoint.texts["scheme"] = scheme.name();
+  for (const auto& [key, value] : scheme.history_state()) checkpoint.numbers[scheme_prefix + key] = value;
+}
+
+void restore_model_state(Model& model, TimeScheme& scheme, const Checkpoint& checkpoint) {
+  require(checkpoint.text("scheme") == scheme.name(), "the checkpoint is of a run with the time scheme '",
+          checkpoint.text("scheme"), "', this run has '", scheme.name(), "'");
+  // Everything is checked before anything is changed, so that a refused checkpoint leaves the model as it was.
+  for (const std::string& name : model.field_names()) {
+    const bool affine = model.field_kind(name) == FieldKind::Affine;
+    const auto it = checkpoint.vectors.find((affine ? affine_prefix : field_prefix) + name);
+    require(it != checkpoint.vectors.end(), "the checkpoint has no values of the field '", name,
+            "': it is of another model");
+    const Eigen::Index expected =
+        affine ? Eigen::Index(model.affine_coefficients(name).size() + 1) : model.space(name).num_dofs();
+    require(it->second.size() == expected, "the checkpoint's field '", name, "' has ", it->second.size(),
+            " values, the model's has ", expected, ": it is of another mesh or model");
+  }
+  for (const std::string& name : model.field_names()) {
+    if (model.field_kind(name) != FieldKind::Affine) {
+      model.set_values(name, checkpoint.vector(field_prefix + name));
+      continue;
+    }
+    const Eigen::VectorXd& map = checkpoint.vector(affine_prefix + name);
+    model.set_affine(name, map[0], std::vector<double>(map.data() + 1, map.data() + map.size()));
+  }
+  model.set_time(checkpoint.number("model:time"));
+  std::map<std::string, double> history;
+  for (const auto& [key, value] : checkpoint.numbers)
+    if (key.starts_with(scheme_prefix)) history[key.substr(scheme_prefix.size())] = value;
+  scheme.restore_history_state(history);
+}
+
+}  // namespace pc
