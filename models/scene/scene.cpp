@@ -94,6 +94,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
     if (path.is_relative()) path = std::filesystem::path(directory) / path;
     GmshOptions options;
     if (const auto f = m.find("size_factor")) options.mesh_size_factor = f->as_positive();
+    scene.mesh_file = file->as_string();
+    scene.mesh_size_factor = options.mesh_size_factor;
     auto mesh = std::make_shared<const Mesh>(import_gmsh(path.string(), options));
     scene.mesh_description = message("gmsh '", file->as_string(), "': ", mesh->num_cells(), " ",
                                      to_string(mesh->cell_shape()), "s");
@@ -104,6 +106,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
   const auto x = m.at("x").as_vector(2), y = m.at("y").as_vector(2);
   scene.nx = m.at("nx").as_int_at_least(1);
   scene.ny = m.at("ny").as_int_at_least(1);
+  scene.mesh_generator = generator;
+  scene.mesh_spacing = {(x[1] - x[0]) / scene.nx, (y[1] - y[0]) / scene.ny};
   if (generator == "rectangle") {
     const int cells[2] = {scene.nx, scene.ny};
     require_fits(scene_json, m, 2, cells);
@@ -115,7 +119,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
   }
   if (generator == "box") {
     const auto z = m.at("z").as_vector(2);
-    const int nz = m.at("nz").as_int_at_least(1);
+    const int nz = scene.nz = m.at("nz").as_int_at_least(1);
+    scene.mesh_spacing.push_back((z[1] - z[0]) / nz);
     const int cells[3] = {scene.nx, scene.ny, nz};
     require_fits(scene_json, m, 3, cells);
     require(cell == "tetrahedron" || cell == "hexahedron", "scene: 'mesh.cell' must be tetrahedron or hexahedron "

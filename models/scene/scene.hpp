@@ -40,8 +40,12 @@ struct SceneOutput {
 struct Scene {
   Json json;  // the scene as read, after --set overrides
   std::string name;
-  std::string mesh_description;  // e.g. "60 x 20 triangle, P1"
-  int nx = 0, ny = 0;            // structured meshes only
+  std::string mesh_description;  // e.g. "60 x 20 triangles"
+  int nx = 0, ny = 0, nz = 0;    // generated meshes only (nz: box)
+  std::string mesh_generator;    // mesh.generator ("rectangle", "box"); empty for a gmsh mesh
+  std::vector<double> mesh_spacing;  // generated meshes: the cell size along each axis
+  std::string mesh_file;         // mesh.gmsh as the scene gives it; empty for a generated mesh
+  double mesh_size_factor = 1;   // mesh.size_factor (gmsh)
   PiezoContactSpec spec;         // everything but the foundation; spec.scheme from time.scheme and its parameters
   std::vector<double> u0, v0;    // constant initial displacement and velocity
   std::vector<SceneFoundation> foundations;

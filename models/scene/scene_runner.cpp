@@ -20,6 +20,7 @@
 #include "models/output/csv_log.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/scene/interrupts.hpp"
+#include "models/scene/mesh_summary.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/initial_potential.hpp"
 
@@ -171,9 +172,13 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   Json s = Json::object();
   s.set("scene", Json(scene.name));
   s.set("foundation", Json(r.foundation));
-  s.set("mesh", Json(scene.mesh_description));
-  s.set("nx", Json(double(scene.nx)));
-  s.set("ny", Json(double(scene.ny)));
+  s.set("mesh", mesh_summary(scene));
+  // A generated mesh's cell counts at the top level too, as 2D readers know them; a gmsh mesh has none.
+  if (!scene.mesh_generator.empty()) {
+    s.set("nx", Json(double(scene.nx)));
+    s.set("ny", Json(double(scene.ny)));
+    if (scene.nz > 0) s.set("nz", Json(double(scene.nz)));
+  }
   s.set("order", Json(double(scene.spec.order)));
   s.set("steps", Json(double(steps)));
   s.set("completed", Json(r.completed));
