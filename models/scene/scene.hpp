@@ -21,9 +21,10 @@ struct SceneFoundation {
 };
 
 struct SceneGrid {
-  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0, z0 = 0, z1 = 0;
   int nx = 0, ny = 0;  // sample points along each axis
-  // The sample points, x fastest, in the plane z = 0.
+  int nz = 0;          // 3D scenes (output.grid.z, required there): points along z; 0 in 2D
+  // The sample points, x fastest, then y, then z (z = 0 in 2D).
   std::vector<std::array<double, 3>> points() const;
 };
 

@@ -2,10 +2,15 @@
 // mesh a gmsh .geo file: this test is labelled "gmsh" (see tests/CMakeLists.txt).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "models/scene/json.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "support/error_and_temp_dir.hpp"
 
 namespace pc {
 namespace {
@@ -21,6 +26,48 @@ TEST(ShippedScenes, LoadAndRunAFewSteps) {
       EXPECT_TRUE(r.completed) << name << " / " << f.name << ": " << r.message;
       EXPECT_EQ(r.steps, 2) << name << " / " << f.name;
     }
+  }
+}
+
+// A gmsh mesh's summary says what the mesh is (issue 16): the file, its nodes and cells as the mesh has them,
+// the cell type and the shortest and longest edge; no structured counts (they were written as 0).
+using ShippedSceneResults = testing::TemporaryDirectoryTest;
+
+TEST_F(ShippedSceneResults, AGmshMeshIsDescribedInTheSummary) {
+  for (const auto& [name, file, cell_type] : {std::tuple{"strip2d.json", "strip2d.geo", "triangle"},
+                                              std::tuple{"box3d.json", "box3d.geo", "tetrahedron"}}) {
+    const Scene scene = load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/" + name,
+                                        {"time.steps=1", "time.T=0.001", "mesh.size_factor=2"});
+    const std::string dir = (directory_ / scene.name).string();
+    ASSERT_TRUE(run_foundation(scene, find_foundation(scene, "insulated"), dir, false).completed) << name;
+    const Json summary = read_json_file(dir + "/summary.json");
+    const Mesh& mesh = *scene.spec.mesh;
+    const Json m = summary.at("mesh");
+    EXPECT_EQ(m.at("source").as_string(), "gmsh") << name;
+    EXPECT_EQ(m.at("file").as_string(), file) << name;
+    EXPECT_EQ(m.at("size_factor").as_number(), 2.0) << name;
+    EXPECT_EQ(m.at("dim").as_int(), mesh.dim()) << name;
+    EXPECT_EQ(m.at("nodes").as_int(), mesh.num_nodes()) << name;
+    EXPECT_EQ(m.at("cells").as_int(), mesh.num_cells()) << name;
+    EXPECT_EQ(m.at("cell_type").as_string(), cell_type) << name;
+    double h_min = 1e300, h_max = 0;  // every pair of a simplex's vertices is an edge
+    for (int c = 0; c < mesh.num_cells(); ++c)
+      for (int a : mesh.cell(c))
+        for (int b : mesh.cell(c)) {
+          if (a == b) continue;
+          double l2 = 0;
+          for (int d = 0; d < mesh.dim(); ++d) l2 += std::pow(mesh.node(a)[d] - mesh.node(b)[d], 2);
+          h_min = std::min(h_min, std::sqrt(l2));
+          h_max = std::max(h_max, std::sqrt(l2));
+        }
+    EXPECT_EQ(m.at("h_min").as_number(), h_min) << name;
+    EXPECT_EQ(m.at("h_max").as_number(), h_max) << name;
+    for (const char* key : {"nx", "ny", "nz", "generator"}) {
+      EXPECT_FALSE(summary.contains(key)) << name << ": " << key;
+      EXPECT_FALSE(m.contains(key)) << name << ": " << key;
+    }
+    EXPECT_EQ(summary.contains("max_abs_uz"), mesh.dim() == 3) << name;
+    EXPECT_EQ(summary.contains("uz_corner"), mesh.dim() == 3) << name;
   }
 }
 
