@@ -17,6 +17,7 @@
 #include "models/scene/json.hpp"
 #include "models/scene/scene_runner.hpp"
 #include "support/error_and_temp_dir.hpp"
+#include "support/shipped_scenes.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {
@@ -24,19 +25,17 @@ namespace {
 
 using testing::error_of;
 
-const std::string kPaper = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
-const std::string kBox = std::string(PIEZOCONTACT_SCENES) + "/box3d.json";
+const std::string& kPaper = testing::kPaperScene;
+const std::string& kBox = testing::kBoxScene;
 
 // box3d.json on a generated 6 x 2 x 2 tetrahedral mesh (cells of 5 mm), 4 steps to T, with a grid whose
 // points are the mesh's nodes.
-const std::vector<std::string> kCoarseBox = {
-    R"(mesh={"generator": "box", "x": [0, 0.03], "y": [0, 0.01], "z": [0, 0.01], "nx": 6, "ny": 2, "nz": 2,
-             "cell": "tetrahedron", "order": 1})",
-    R"(regions={"clamped": ["xmin"], "traction": ["ymax"], "contact": "ymin", "grounded": ["ymax"],
-                "charge": ["xmax"]})",
-    "loads.traction[0].region=ymax",
-    R"(output.grid={"x": [0, 0.03, 7], "y": [0, 0.01, 3], "z": [0, 0.01, 3]})",
-    "time.steps=4"};
+const std::vector<std::string> kCoarseBox = [] {
+  std::vector<std::string> overrides = testing::generated_box(6, 2, 2, "tetrahedron");
+  overrides.insert(overrides.end(), {R"(output.grid={"x": [0, 0.03, 7], "y": [0, 0.01, 3], "z": [0, 0.01, 3]})",
+                                     "time.steps=4"});
+  return overrides;
+}();
 
 const std::vector<std::string> kCoarsePaper = {"mesh.nx=6", "mesh.ny=2", "time.steps=4",
                                                R"(output.grid={"x": [0, 0.03, 7], "y": [0, 0.01, 3]})"};
