@@ -18,12 +18,14 @@
 #include "models/scene/scene_runner.hpp"
 #include "support/error_and_temp_dir.hpp"
 #include "support/shipped_scenes.hpp"
+#include "support/simplex_edges.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
 
 using testing::error_of;
+using testing::simplex_edge_range;
 
 const std::string& kPaper = testing::kPaperScene;
 const std::string& kBox = testing::kBoxScene;
@@ -65,22 +67,6 @@ Table read_csv(const std::filesystem::path& path) {
     t.rows.push_back(row);
   }
   return t;
-}
-
-// The shortest and longest edge of a simplex mesh (every pair of a simplex's vertices is an edge).
-std::pair<double, double> simplex_edge_range(const Mesh& mesh) {
-  double lo = 1e300, hi = 0;
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    const auto v = mesh.cell(c);
-    for (size_t a = 0; a < v.size(); ++a)
-      for (size_t b = a + 1; b < v.size(); ++b) {
-        double l2 = 0;
-        for (int d = 0; d < mesh.dim(); ++d) l2 += std::pow(mesh.node(v[a])[d] - mesh.node(v[b])[d], 2);
-        lo = std::min(lo, std::sqrt(l2));
-        hi = std::max(hi, std::sqrt(l2));
-      }
-  }
-  return {lo, hi};
 }
 
 // One foundation's run into a fresh directory, its model kept for the nodal values.

@@ -2,8 +2,6 @@
 // mesh a gmsh .geo file: this test is labelled "gmsh" (see tests/CMakeLists.txt).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -11,6 +9,7 @@
 #include "models/scene/json.hpp"
 #include "models/scene/scene_runner.hpp"
 #include "support/error_and_temp_dir.hpp"
+#include "support/simplex_edges.hpp"
 
 namespace pc {
 namespace {
@@ -50,16 +49,7 @@ TEST_F(ShippedSceneResults, AGmshMeshIsDescribedInTheSummary) {
     EXPECT_EQ(m.at("nodes").as_int(), mesh.num_nodes()) << name;
     EXPECT_EQ(m.at("cells").as_int(), mesh.num_cells()) << name;
     EXPECT_EQ(m.at("cell_type").as_string(), cell_type) << name;
-    double h_min = 1e300, h_max = 0;  // every pair of a simplex's vertices is an edge
-    for (int c = 0; c < mesh.num_cells(); ++c)
-      for (int a : mesh.cell(c))
-        for (int b : mesh.cell(c)) {
-          if (a == b) continue;
-          double l2 = 0;
-          for (int d = 0; d < mesh.dim(); ++d) l2 += std::pow(mesh.node(a)[d] - mesh.node(b)[d], 2);
-          h_min = std::min(h_min, std::sqrt(l2));
-          h_max = std::max(h_max, std::sqrt(l2));
-        }
+    const auto [h_min, h_max] = testing::simplex_edge_range(mesh);
     EXPECT_EQ(m.at("h_min").as_number(), h_min) << name;
     EXPECT_EQ(m.at("h_max").as_number(), h_max) << name;
     for (const char* key : {"nx", "ny", "nz", "generator"}) {
