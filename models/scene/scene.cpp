@@ -1,5 +1,6 @@
 #include "models/scene/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -94,6 +95,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
     if (path.is_relative()) path = std::filesystem::path(directory) / path;
     GmshOptions options;
     if (const auto f = m.find("size_factor")) options.mesh_size_factor = f->as_positive();
+    scene.mesh_file = file->as_string();
+    scene.mesh_size_factor = options.mesh_size_factor;
     auto mesh = std::make_shared<const Mesh>(import_gmsh(path.string(), options));
     scene.mesh_description = message("gmsh '", file->as_string(), "': ", mesh->num_cells(), " ",
                                      to_string(mesh->cell_shape()), "s");
@@ -104,6 +107,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
   const auto x = m.at("x").as_vector(2), y = m.at("y").as_vector(2);
   scene.nx = m.at("nx").as_int_at_least(1);
   scene.ny = m.at("ny").as_int_at_least(1);
+  scene.mesh_generator = generator;
+  scene.mesh_spacing = {(x[1] - x[0]) / scene.nx, (y[1] - y[0]) / scene.ny};
   if (generator == "rectangle") {
     const int cells[2] = {scene.nx, scene.ny};
     require_fits(scene_json, m, 2, cells);
@@ -115,7 +120,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
   }
   if (generator == "box") {
     const auto z = m.at("z").as_vector(2);
-    const int nz = m.at("nz").as_int_at_least(1);
+    const int nz = scene.nz = m.at("nz").as_int_at_least(1);
+    scene.mesh_spacing.push_back((z[1] - z[0]) / nz);
     const int cells[3] = {scene.nx, scene.ny, nz};
     require_fits(scene_json, m, 3, cells);
     require(cell == "tetrahedron" || cell == "hexahedron", "scene: 'mesh.cell' must be tetrahedron or hexahedron "
@@ -456,17 +462,37 @@ Scene load_scene(const Json& json, const std::string& directory) {
       for (int d = 0; d < dim; ++d) out.corner[d] = corner[d], out.center[d] = center[d];
     }
     if (const auto g = o->find("grid")) {
-      require_known_keys(*g, {"x", "y"});
-      const auto x = g->at("x").as_vector(3), y = g->at("y").as_vector(3);
+      // A 3D scene samples a volume or the planes it names (z: [c, c, 1]), never a default plane; a 2D
+      // scene has no z to sample.
+      require(dim == 3 || !g->contains("z"), "scene: '", g->path(), ".z' is given, but the scene is 2D (its mesh "
+              "has no z): remove it");
+      require(dim == 2 || g->contains("z"), "scene: '", g->path(), ".z' is required in a 3D scene: [min, max, "
+              "points] (a plane z = c is [c, c, 1])");
+      require_known_keys(*g, dim == 3 ? std::vector<std::string>{"x", "y", "z"} : std::vector<std::string>{"x", "y"});
+      std::vector<std::pair<const char*, std::vector<double>>> axes = {{"x", g->at("x").as_vector(3)},
+                                                                       {"y", g->at("y").as_vector(3)}};
+      if (dim == 3) axes.push_back({"z", g->at("z").as_vector(3)});
       // A count that cannot be (not an integer, < 1, or more points than a table can sensibly hold) is
       // refused here, naming the key and the value, not turned into an int that overflows to no grid.
-      for (const auto& [axis, v] : {std::pair{"x", x}, std::pair{"y", y}})
+      double total = 1;
+      std::string product;
+      for (const auto& [axis, v] : axes) {
         require(std::isfinite(v[2]) && v[2] >= 1 && v[2] <= kMaxGridPoints && v[2] == std::floor(v[2]), "scene: '",
                 g->path(), ".", axis, "[2]' = ", v[2], ": the third entry is a number of points, an integer in [1, ",
                 kMaxGridPoints, "]");
-      require(x[2] * y[2] <= kMaxGridPoints, "scene: '", g->path(), "': ", x[2], " x ", y[2], " = ", x[2] * y[2],
+        total *= v[2];
+        product += message(product.empty() ? "" : " x ", v[2]);
+      }
+      require(total <= kMaxGridPoints, "scene: '", g->path(), "': ", product, " = ", total,
               " points, more than the limit of ", kMaxGridPoints);
-      out.grid = {x[0], x[1], y[0], y[1], int(x[2]), int(y[2])};
+      const auto& x = axes[0].second;
+      const auto& y = axes[1].second;
+      out.grid.x0 = x[0], out.grid.x1 = x[1], out.grid.nx = int(x[2]);
+      out.grid.y0 = y[0], out.grid.y1 = y[1], out.grid.ny = int(y[2]);
+      if (dim == 3) {
+        const auto& z = axes[2].second;
+        out.grid.z0 = z[0], out.grid.z1 = z[1], out.grid.nz = int(z[2]);
+      }
     }
     if (const auto x = o->find("slip_threshold")) out.slip_threshold = x->as_number_at_least(0);
     if (const auto x = o->find("phi_f_sweep")) out.phi_f_sweep = x->as_vector();
@@ -506,10 +532,11 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
 }
 
 std::vector<std::array<double, 3>> SceneGrid::points() const {
+  auto along = [](double a, double b, int n, int i) { return n > 1 ? a + (b - a) * i / (n - 1) : a; };
   std::vector<std::array<double, 3>> out;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      out.push_back({nx > 1 ? x0 + (x1 - x0) * i / (nx - 1) : x0, ny > 1 ? y0 + (y1 - y0) * j / (ny - 1) : y0, 0.0});
+  for (int k = 0; k < std::max(nz, 1); ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) out.push_back({along(x0, x1, nx, i), along(y0, y1, ny, j), along(z0, z1, nz, k)});
   return out;
 }
 

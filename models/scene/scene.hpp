@@ -21,9 +21,10 @@ struct SceneFoundation {
 };
 
 struct SceneGrid {
-  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0, z0 = 0, z1 = 0;
   int nx = 0, ny = 0;  // sample points along each axis
-  // The sample points, x fastest, in the plane z = 0.
+  int nz = 0;          // 3D scenes (output.grid.z, required there): points along z; 0 in 2D
+  // The sample points, x fastest, then y, then z (z = 0 in 2D).
   std::vector<std::array<double, 3>> points() const;
 };
 
@@ -44,8 +45,12 @@ struct Scene {
   std::vector<std::string> overrides;  // ... the --set overrides applied to it
   std::string directory;               // what relative paths in the scene (gmsh file, plugins) resolve against
   std::string name;
-  std::string mesh_description;  // e.g. "60 x 20 triangle, P1"
-  int nx = 0, ny = 0;            // structured meshes only
+  std::string mesh_description;  // e.g. "60 x 20 triangles"
+  int nx = 0, ny = 0, nz = 0;    // generated meshes only (nz: box)
+  std::string mesh_generator;    // mesh.generator ("rectangle", "box"); empty for a gmsh mesh
+  std::vector<double> mesh_spacing;  // generated meshes: the cell size along each axis
+  std::string mesh_file;         // mesh.gmsh as the scene gives it; empty for a generated mesh
+  double mesh_size_factor = 1;   // mesh.size_factor (gmsh)
   PiezoContactSpec spec;         // everything but the foundation; spec.scheme from time.scheme and its parameters
   std::vector<double> u0, v0;    // constant initial displacement and velocity
   std::vector<SceneFoundation> foundations;

@@ -22,6 +22,7 @@
 #include "models/output/csv_log.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/scene/interrupts.hpp"
+#include "models/scene/mesh_summary.hpp"
 #include "models/scene/run_manifest.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/initial_potential.hpp"
@@ -127,13 +128,22 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
   }
   if (dir.empty()) return;
 
-  // The output grid (x fastest), in the plane z = 0 for 3D scenes.
+  // The output grid (x fastest, then y, then z): every coordinate and every component of u and v.
   if (scene.output.grid.nx > 0 && scene.output.grid.ny > 0) {
+    std::vector<std::string> columns = {"x", "y", "z"};
+    columns.resize(size_t(dim));
+    for (const char* field : {"u", "v"})
+      for (int d = 0; d < dim; ++d) columns.push_back(message(field, "xyz"[d]));
+    columns.push_back("phi");
     std::vector<std::vector<double>> rows;
-    for (const std::array<double, 3>& x : scene.output.grid.points())
-      rows.push_back({x[0], x[1], at("u", 0, x), at("u", 1, x), at("v", 0, x), at("v", 1, x),
-                      electric ? at("phi", 0, x) : 0.0});
-    write_finite_csv(dir + "/grid.csv", {"x", "y", "ux", "uy", "vx", "vy", "phi"}, rows);
+    for (const std::array<double, 3>& x : scene.output.grid.points()) {
+      std::vector<double> row(x.begin(), x.begin() + dim);
+      for (const char* field : {"u", "v"})
+        for (int d = 0; d < dim; ++d) row.push_back(at(field, d, x));
+      row.push_back(electric ? at("phi", 0, x) : 0.0);
+      rows.push_back(row);
+    }
+    write_finite_csv(dir + "/grid.csv", columns, rows);
   }
 
   // The final state on the mesh, for the figures (2D).
@@ -160,11 +170,30 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
   write_finite_csv(dir + "/final_cells.csv", {"n0", "n1", "n2", "von_mises", "phi_mean"}, cell_rows);
 }
 
+// history.csv, a row per step: the corner's u_y (and u_z in 3D), the centre's potential, Newton's iterations.
+std::vector<std::string> history_columns(int dim) {
+  if (dim == 3) return {"t", "uy_corner", "uz_corner", "phi_center", "newton_iterations"};
+  return {"t", "uy_corner", "phi_center", "newton_iterations"};
+}
+
+std::vector<double> history_row(const Model& m, const PointLocator& locator, const SceneOutput& output, double t,
+                                int newton_iterations) {
+  std::vector<double> row = {t, probe(m, locator, "u", 1, output.corner)};
+  if (m.mesh().dim() == 3) row.push_back(probe(m, locator, "u", 2, output.corner));
+  row.push_back(probe(m, locator, "phi", 0, output.center));
+  row.push_back(double(newton_iterations));
+  return row;
+}
+
 // The result's numbers by name, as summary.json holds them.
 std::vector<std::pair<const char*, double>> result_numbers(const FoundationRunResult& r) {
-  return {{"max_abs_ux", r.max_abs_ux}, {"max_abs_uy", r.max_abs_uy}, {"phi_min", r.phi_min},
-          {"phi_max", r.phi_max},       {"ux_corner", r.ux_corner},   {"uy_corner", r.uy_corner},
-          {"phi_center", r.phi_center}, {"max_abs_vtau_contact", r.max_abs_vtau_contact}};
+  std::vector<std::pair<const char*, double>> numbers = {{"max_abs_ux", r.max_abs_ux}, {"max_abs_uy", r.max_abs_uy}};
+  if (r.dim == 3) numbers.push_back({"max_abs_uz", r.max_abs_uz});
+  numbers.insert(numbers.end(), {{"phi_min", r.phi_min}, {"phi_max", r.phi_max}, {"ux_corner", r.ux_corner},
+                                 {"uy_corner", r.uy_corner}});
+  if (r.dim == 3) numbers.push_back({"uz_corner", r.uz_corner});
+  numbers.insert(numbers.end(), {{"phi_center", r.phi_center}, {"max_abs_vtau_contact", r.max_abs_vtau_contact}});
+  return numbers;
 }
 
 // A number of the summary, or null when it is not finite (JSON has no NaN; the run is then not completed).
@@ -174,9 +203,13 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   Json s = Json::object();
   s.set("scene", Json(scene.name));
   s.set("foundation", Json(r.foundation));
-  s.set("mesh", Json(scene.mesh_description));
-  s.set("nx", Json(double(scene.nx)));
-  s.set("ny", Json(double(scene.ny)));
+  s.set("mesh", mesh_summary(scene));
+  // A generated mesh's cell counts at the top level too, as 2D readers know them; a gmsh mesh has none.
+  if (!scene.mesh_generator.empty()) {
+    s.set("nx", Json(double(scene.nx)));
+    s.set("ny", Json(double(scene.ny)));
+    if (scene.nz > 0) s.set("nz", Json(double(scene.nz)));
+  }
   s.set("order", Json(double(scene.spec.order)));
   s.set("steps", Json(double(steps)));
   s.set("completed", Json(r.completed));
@@ -301,7 +334,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   result.foundation = foundation.name;
   Model& m = *built.model;
   const Mesh& mesh = m.mesh();
-  const int dim = mesh.dim();
+  const int dim = result.dim = mesh.dim();
   for (const std::string& u : m.unknowns()) result.ndof += m.space(u).num_dofs();
 
   // Every run starts from the scene's initial state, whatever an earlier run of this model left.
@@ -328,7 +361,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");
-  const std::vector<std::string> history_columns = {"t", "uy_corner", "phi_center", "newton_iterations"};
+  const std::vector<std::string> history_header = history_columns(dim);
   const std::string checkpoint_path = dir + "/checkpoint.bin";
   double earlier_wall_seconds = 0;  // of the run's part before a resume
 
@@ -347,13 +380,13 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       restore_model_state(m, *built.scheme, checkpoint);
       options.resume = restore_stepper_state(checkpoint);
       restore_totals(checkpoint, result, earlier_wall_seconds);
-      history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_columns, options.resume->steps));
+      history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_header, options.resume->steps));
       series->continue_from(restore_series(checkpoint));
       if (progress)
         std::printf("  [%s] resumed at step %d, t = %.6g s, from %s\n", foundation.name.c_str(), options.resume->steps,
                     options.resume->time, checkpoint_path.c_str());
     } else {
-      history = std::make_unique<CsvLog>(dir + "/history.csv", history_columns);
+      history = std::make_unique<CsvLog>(dir + "/history.csv", history_header);
       series->continue_from({});  // a series of an earlier run in this folder is not mixed in
       std::filesystem::remove(checkpoint_path, error);
     }
@@ -384,10 +417,8 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     done.newton_iterations_total += r.newton.iterations;
     done.newton_iterations_max_per_step = std::max(done.newton_iterations_max_per_step, r.newton.iterations);
     require_finite_state(model, when(r));
-    const std::vector<double> row = {r.time, probe(model, locator, "u", 1, scene.output.corner),
-                                     electric ? probe(model, locator, "phi", 0, scene.output.center) : 0.0,
-                                     double(r.newton.iterations)};
-    require_finite_rows(when(r) + ": history.csv", history_columns, {row});
+    const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
+    require_finite_rows(when(r) + ": history.csv", history_header, {row});
     if (history) history->row(row);
     if (progress && (r.step % scene.output.progress_every == 0 || r.step == 1)) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -455,6 +486,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   for (int s = 0; s < vspace.num_scalar_dofs(); ++s) {
     result.max_abs_ux = std::max(result.max_abs_ux, std::abs(u[vspace.dof(s, 0)]));
     result.max_abs_uy = std::max(result.max_abs_uy, std::abs(u[vspace.dof(s, 1)]));
+    if (dim == 3) result.max_abs_uz = std::max(result.max_abs_uz, std::abs(u[vspace.dof(s, 2)]));
   }
   if (electric) {
     result.phi_min = m.values("phi").minCoeff();
@@ -463,6 +495,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   }
   result.ux_corner = probe(m, locator, "u", 0, scene.output.corner);
   result.uy_corner = probe(m, locator, "u", 1, scene.output.corner);
+  if (dim == 3) result.uz_corner = probe(m, locator, "u", 2, scene.output.corner);
   const auto diagnostics = m.diagnostics();
   if (diagnostics.count("contact_nodes_in_slip")) {
     result.n_slip_nodes = int(diagnostics.at("contact_nodes_in_slip"));

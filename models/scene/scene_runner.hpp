@@ -1,10 +1,12 @@
 #pragma once
 // Runs a scene: one time-dependent run per foundation of the scene, each writing into OUT/<foundation>/
-//   summary.json   key numbers of the run (see README, "Reading the results")
-//   history.csv    t, uy_corner, phi_center, newton_iterations: one row per step, written as it goes
-//   gamma_c.csv    x, ux, uy, vx, vy, phi, contact_pressure at the contact nodes, final time, sorted by x
-//   grid.csv       x, y, ux, uy, phi sampled on the scene's output grid (x fastest), final time
-//   final_nodes.csv, final_cells.csv   the final state on the mesh (for the figures)
+//   summary.json   key numbers of the run and what its mesh is (see README, "Reading the results")
+//   history.csv    t, uy_corner, (uz_corner in 3D,) phi_center, newton_iterations: one row per step, written as it goes
+//   gamma_c.csv    x, (z,) ux, uy, (uz,) vx, vy, (vz,) phi, contact_pressure at the contact nodes' own dof values,
+//                  final time, sorted by x
+//   grid.csv       x, y, (z,) ux, uy, (uz,) vx, vy, (vz,) phi sampled on the scene's output grid (x fastest,
+//                  then y, then z), final time
+//   final_nodes.csv, final_cells.csv   the final state on the mesh (for the figures, 2D)
 //   <name>.pvd + <name>_<step>.vtu     ParaView time series, every output.vtu_every steps and step 0
 //   checkpoint.bin  the state to continue from (run --resume), every output.checkpoint_every steps
 // and, when the scene asks for it, OUT/sweep_phi_f.csv: the final displacement against the foundation
@@ -45,6 +47,8 @@ struct FoundationRunResult {
   int steps = 0, ndof = 0, newton_iterations_total = 0, newton_iterations_max_per_step = 0;
   double wall_seconds = 0;
   double max_abs_ux = 0, max_abs_uy = 0, phi_min = 0, phi_max = 0, uy_corner = 0, ux_corner = 0, phi_center = 0;
+  int dim = 2;                            // of the mesh: max_abs_uz and uz_corner are results in 3D only
+  double max_abs_uz = 0, uz_corner = 0;
   double max_abs_vtau_contact = 0;
   int n_slip_nodes = 0, n_contact_nodes = 0;
   // Time per phase, summed over the Newton solves of the steps and of the initial potential, and the

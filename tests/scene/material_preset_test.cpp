@@ -8,6 +8,7 @@
 
 #include "assembly/error.hpp"
 #include "models/scene/scene.hpp"
+#include "support/shipped_scenes.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {
@@ -15,17 +16,15 @@ namespace {
 
 using testing::error_of;
 
-const std::string kPaper = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
-const std::string kBox = std::string(PIEZOCONTACT_SCENES) + "/box3d.json";
+const std::string& kPaper = testing::kPaperScene;
+const std::string& kBox = testing::kBoxScene;
 
 // box3d.json on a generated mesh (its own is meshed by gmsh), with the generator's region names.
-const std::vector<std::string> kGeneratedBox = {
-    R"(mesh={"generator": "box", "x": [0, 0.03], "y": [0, 0.01], "z": [0, 0.01], "nx": 3, "ny": 1, "nz": 1,
-             "cell": "hexahedron", "order": 1})",
-    R"(regions={"clamped": ["xmin"], "traction": ["ymax"], "contact": "ymin", "grounded": ["ymax"],
-                "charge": ["xmax"]})",
-    "loads.traction[0].region=ymax",
-    "output.probes.corner=[0.03, 0.01, 0.005]", "output.probes.center=[0.015, 0.005, 0.005]"};
+const std::vector<std::string> kGeneratedBox = [] {
+  std::vector<std::string> overrides = testing::generated_box(3, 1, 1, "hexahedron");
+  overrides.insert(overrides.end(), {"output.probes.corner=[0.03, 0.01, 0.005]", "output.probes.center=[0.015, 0.005, 0.005]"});
+  return overrides;
+}();
 
 std::vector<std::string> with(std::vector<std::string> overrides, const std::string& more) {
   overrides.push_back(more);

@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "models/scene/json.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "support/error_and_temp_dir.hpp"
+#include "support/simplex_edges.hpp"
 
 namespace pc {
 namespace {
@@ -21,6 +25,39 @@ TEST(ShippedScenes, LoadAndRunAFewSteps) {
       EXPECT_TRUE(r.completed) << name << " / " << f.name << ": " << r.message;
       EXPECT_EQ(r.steps, 2) << name << " / " << f.name;
     }
+  }
+}
+
+// A gmsh mesh's summary says what the mesh is (issue 16): the file, its nodes and cells as the mesh has them,
+// the cell type and the shortest and longest edge; no structured counts (they were written as 0).
+using ShippedSceneResults = testing::TemporaryDirectoryTest;
+
+TEST_F(ShippedSceneResults, AGmshMeshIsDescribedInTheSummary) {
+  for (const auto& [name, file, cell_type] : {std::tuple{"strip2d.json", "strip2d.geo", "triangle"},
+                                              std::tuple{"box3d.json", "box3d.geo", "tetrahedron"}}) {
+    const Scene scene = load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/" + name,
+                                        {"time.steps=1", "time.T=0.001", "mesh.size_factor=2"});
+    const std::string dir = (directory_ / scene.name).string();
+    ASSERT_TRUE(run_foundation(scene, find_foundation(scene, "insulated"), dir, false).completed) << name;
+    const Json summary = read_json_file(dir + "/summary.json");
+    const Mesh& mesh = *scene.spec.mesh;
+    const Json m = summary.at("mesh");
+    EXPECT_EQ(m.at("source").as_string(), "gmsh") << name;
+    EXPECT_EQ(m.at("file").as_string(), file) << name;
+    EXPECT_EQ(m.at("size_factor").as_number(), 2.0) << name;
+    EXPECT_EQ(m.at("dim").as_int(), mesh.dim()) << name;
+    EXPECT_EQ(m.at("nodes").as_int(), mesh.num_nodes()) << name;
+    EXPECT_EQ(m.at("cells").as_int(), mesh.num_cells()) << name;
+    EXPECT_EQ(m.at("cell_type").as_string(), cell_type) << name;
+    const auto [h_min, h_max] = testing::simplex_edge_range(mesh);
+    EXPECT_EQ(m.at("h_min").as_number(), h_min) << name;
+    EXPECT_EQ(m.at("h_max").as_number(), h_max) << name;
+    for (const char* key : {"nx", "ny", "nz", "generator"}) {
+      EXPECT_FALSE(summary.contains(key)) << name << ": " << key;
+      EXPECT_FALSE(m.contains(key)) << name << ": " << key;
+    }
+    EXPECT_EQ(summary.contains("max_abs_uz"), mesh.dim() == 3) << name;
+    EXPECT_EQ(summary.contains("uz_corner"), mesh.dim() == 3) << name;
   }
 }
 
