@@ -2,10 +2,23 @@
 
 #include <gmsh.h>
 
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
+#include <thread>
 #include <unordered_map>
 
 #include "assembly/error.hpp"
@@ -167,26 +180,154 @@ void throw_logged_error() {
   if (!error.empty()) throw error;
 }
 
-Mesh read_model(const std::string& path, const GmshOptions& options) {
+void set_quiet_options(const GmshOptions& options) {
   gmsh::option::setNumber("General.Terminal", options.verbosity > 0 ? 1 : 0);
   gmsh::option::setNumber("General.Verbosity", options.verbosity);
   // gmsh logs errors instead of throwing them: an exception thrown from inside its .geo parser leaves
   // the parser's state corrupt, and every later parse in the process fails.
   gmsh::option::setNumber("General.AbortOnError", 0);
-  gmsh::open(path);
-  throw_logged_error();
+}
 
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char ch) { return std::tolower(ch); });
-  if (extension == ".geo") {
-    // Scale whatever factor the script sets for itself.
-    double factor = 1;
-    gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
-    gmsh::option::setNumber("Mesh.MeshSizeFactor", factor * options.mesh_size_factor);
-    gmsh::model::mesh::generate(gmsh::model::getDimension());
-    throw_logged_error();
+// In the child: runs the script, meshes it and writes the mesh, exactly, to `msh`.
+void mesh_script(const std::string& geo, const std::string& msh, const GmshOptions& options) {
+  set_quiet_options(options);
+  gmsh::open(geo);
+  throw_logged_error();
+  // Scale whatever factor the script sets for itself.
+  double factor = 1;
+  gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
+  gmsh::option::setNumber("Mesh.MeshSizeFactor", factor * options.mesh_size_factor);
+  gmsh::model::mesh::generate(gmsh::model::getDimension());
+  throw_logged_error();
+  gmsh::option::setNumber("Mesh.Binary", 1);   // doubles bit for bit
+  gmsh::option::setNumber("Mesh.SaveAll", 1);  // every element, as the script made them
+  gmsh::write(msh);
+  throw_logged_error();
+}
+
+// A statement missing its ';' is reported by gmsh at the next statement's line: name the line above too.
+std::string with_line_hint(const std::string& geo, const std::string& error) {
+  const auto at = error.find("', line ");
+  if (at == std::string::npos || error.find("syntax error", at) == std::string::npos) return error;
+  const int line = std::atoi(error.c_str() + at + 8);
+  std::ifstream in(geo);
+  std::string text, previous;
+  int previous_line = 0;
+  for (int n = 1; n < line && std::getline(in, text); ++n) {
+    const auto end = text.find_last_not_of(" \t\r");
+    if (end != std::string::npos && text.compare(0, 2, "//") != 0) {
+      previous = text.substr(0, end + 1);
+      previous_line = n;
+    }
   }
+  if (previous.empty() || std::string(";{(,").find(previous.back()) != std::string::npos) return error;
+  // Statements end with ';'; block keywords (If, For, Macro, ...) do not.
+  const size_t begin = previous.find_first_not_of(" \t");
+  const std::string first_word = previous.substr(begin, previous.find_first_of(" \t(", begin) - begin);
+  for (const char* block : {"If", "ElseIf", "Else", "EndIf", "For", "EndFor", "Macro", "Function", "Return"})
+    if (first_word == block) return error;
+  return message(error, " (line ", previous_line, " above it does not end with ';': '", previous, "')");
+}
+
+std::string describe_limit(double bytes) { return message(bytes / 1073741824.0, " GiB"); }
+
+// Runs mesh_script in a child process within the budgets; returns the path of the .msh file it wrote,
+// or throws saying how the child ended.
+std::string mesh_script_in_child(const std::string& geo, const GmshOptions& options) {
+  const std::string msh = (std::filesystem::temp_directory_path() /
+                           ("piezocontact_gmsh_" + std::to_string(::getpid()) + "_" +
+                            std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()) + ".msh"))
+                              .string();
+  int channel[2];
+  require(::pipe(channel) == 0, "gmsh: cannot create a pipe to mesh '", geo, "': ", std::strerror(errno));
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  require(child >= 0, "gmsh: cannot start a process to mesh '", geo, "': ", std::strerror(errno));
+  if (child == 0) {
+    ::close(channel[0]);
+    if (options.verbosity <= 0) {  // what the script prints (Printf, warnings) is not the caller's output
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, 1);
+      ::dup2(null, 2);
+    }
+    if (options.max_memory_bytes > 0) {
+      const rlimit limit{rlim_t(options.max_memory_bytes), rlim_t(options.max_memory_bytes)};
+      ::setrlimit(RLIMIT_AS, &limit);
+    }
+    std::string error;
+    int status = 0;
+    try {
+      const GmshSession session;
+      mesh_script(geo, msh, options);
+    } catch (const std::string& e) {
+      error = e;
+      status = 2;
+    } catch (const std::bad_alloc&) {
+      error = "out of memory";
+      status = 3;
+    } catch (const std::exception& e) {
+      error = e.what();
+      status = 2;
+    } catch (...) {
+      error = "unknown error";
+      status = 2;
+    }
+    for (size_t done = 0; done < error.size();) {
+      const ssize_t n = ::write(channel[1], error.data() + done, error.size() - done);
+      if (n <= 0) break;
+      done += size_t(n);
+    }
+    ::_exit(status);  // no exit handlers of the parent's run in the child
+  }
+  ::close(channel[1]);
+  const auto start = std::chrono::steady_clock::now();
+  int status = 0;
+  bool over_time = false;
+  while (::waitpid(child, &status, WNOHANG) == 0) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.max_seconds > 0 && elapsed > options.max_seconds) {
+      ::kill(child, SIGKILL);
+      ::waitpid(child, &status, 0);
+      over_time = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::string error;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(channel[0], buffer, sizeof buffer)) > 0;) error.append(buffer, size_t(n));
+  ::close(channel[0]);
+  auto remove_msh = [&] {
+    std::error_code ignored;
+    std::filesystem::remove(msh, ignored);
+  };
+  if (over_time) {
+    remove_msh();
+    fail("meshing took more than ", options.max_seconds, " s (mesh.max_seconds) and was stopped: is the mesh size ",
+         "(mesh.size_factor = ", options.mesh_size_factor, ") far too small?");
+  }
+  const bool exited = WIFEXITED(status);
+  const int code = exited ? WEXITSTATUS(status) : 0;
+  if (exited && code == 0 && std::filesystem::exists(msh)) return msh;
+  remove_msh();
+  if (exited && code == 3)
+    fail("meshing ran out of memory", options.max_memory_bytes > 0 ? " (the limit is " + describe_limit(options.max_memory_bytes) + ")" : "",
+         ": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?");
+  if (exited && code == 2) throw with_line_hint(geo, error);
+  if (exited)
+    fail("the script ended gmsh (exit status ", code, ") before its mesh was written: does it call 'Exit'?");
+  fail("gmsh died of signal ", WTERMSIG(status), " (", strsignal(WTERMSIG(status)), ") while meshing",
+       options.max_memory_bytes > 0 ? "; its memory was limited to " + describe_limit(options.max_memory_bytes) +
+                                          " (solver.max_memory_gib, or what the machine has available)"
+                                    : "",
+       ": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?");
+}
+
+// Reads a .msh file into a Mesh (in a gmsh session of the caller's).
+Mesh read_msh(const std::string& msh, const GmshOptions& options) {
+  set_quiet_options(options);
+  gmsh::open(msh);
+  throw_logged_error();
 
   int top = 3;
   Elements cells = get_elements(top);
@@ -265,10 +406,26 @@ Mesh import_gmsh(const std::string& path, const GmshOptions& options) {
   require(options.mesh_size_factor > 0, "gmsh: mesh_size_factor must be positive, got ",
           options.mesh_size_factor);
   const std::lock_guard lock(gmsh_mutex);
-  const GmshSession session;
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char ch) { return std::tolower(ch); });
   // gmsh 4.8 throws its error messages as std::string.
   try {
-    return read_model(path, options);
+    if (extension != ".geo") {
+      const GmshSession session;
+      return read_msh(path, options);
+    }
+    // The child meshes before this process opens a gmsh session of its own.
+    const std::string msh = mesh_script_in_child(path, options);
+    struct RemoveTemporary {
+      const std::string& path;
+      ~RemoveTemporary() {
+        std::error_code ignored;
+        std::filesystem::remove(path, ignored);
+      }
+    } temporary{msh};
+    const GmshSession session;
+    return read_msh(msh, options);
   } catch (const Error& e) {
     fail("gmsh: '", path, "': ", e.what());
   } catch (const std::string& e) {

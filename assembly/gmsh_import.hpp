@@ -11,10 +11,19 @@ namespace pc {
 struct GmshOptions {
   double mesh_size_factor = 1.0;  // scales the characteristic lengths of a .geo script
   int verbosity = 0;              // gmsh's General.Verbosity
+  // Budgets of meshing a .geo script (0: none): a mesh size far too small would otherwise mesh for hours
+  // or until the memory is gone.
+  double max_seconds = 0;
+  double max_memory_bytes = 0;
 };
 
+// A .geo script is a program: gmsh runs it, and meshes its geometry, in a child process of its own, so
+// that whatever the script does (an `Exit;`, a crash inside gmsh, a mesh past a budget, gmsh's terminal
+// output) cannot end, hang or clutter the caller; the child hands back the mesh as a binary .msh file,
+// which is read here. A .msh file is data and is read in this process.
+//
 // Throws when the file does not exist, gmsh cannot read it, it holds no cells, mixes cell shapes, or
-// has second-order geometry. Each call initializes and finalizes gmsh itself: do not call it while the
+// has second-order geometry, or when meshing a script ends early or exceeds a budget. Each call initializes and finalizes gmsh itself: do not call it while the
 // caller's own code holds gmsh initialized.
 Mesh import_gmsh(const std::string& path, const GmshOptions& options = {});
 

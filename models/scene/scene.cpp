@@ -66,17 +66,24 @@ std::vector<std::string> names_of(const Json& j) {
 
 // Refuses a generated mesh whose run would not fit in memory: the machine's available memory, or the
 // user's solver.max_memory_gib.
+struct MemoryLimit {
+  double bytes = 0;  // 0: unknown
+  std::string source;
+};
+
+// The machine's available memory, or the user's solver.max_memory_gib.
+MemoryLimit memory_limit(const Json& scene_json) {
+  MemoryLimit limit{available_memory_bytes(), "available on this machine"};
+  if (const auto solver = scene_json.find("solver"))
+    if (const auto cap = solver->find("max_memory_gib")) limit = {cap->as_positive() * 1073741824.0, "allowed by 'solver.max_memory_gib'"};
+  return limit;
+}
+
 void require_fits(const Json& scene_json, const Json& m, int dim, const int* cells) {
   const auto order_key = m.find("order");
   const int order = order_key && order_key->is_number() && order_key->as_number() == 2 ? 2 : 1;
   const MemoryEstimate e = estimate_structured_run(dim, cells, order);
-  double limit = available_memory_bytes();
-  std::string source = "available on this machine";
-  if (const auto solver = scene_json.find("solver"))
-    if (const auto cap = solver->find("max_memory_gib")) {
-      limit = cap->as_positive() * 1073741824.0;
-      source = "allowed by 'solver.max_memory_gib'";
-    }
+  const auto [limit, source] = memory_limit(scene_json);
   if (limit <= 0 || e.bytes <= limit) return;
   std::string shape = message(cells[0]);
   for (int d = 1; d < dim; ++d) shape += message(" x ", cells[d]);
@@ -87,7 +94,8 @@ void require_fits(const Json& scene_json, const Json& m, int dim, const int* cel
 
 std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, const std::string& directory,
                                        Scene& scene) {
-  require_known_keys(m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor"});
+  require_known_keys(m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor",
+                         "max_seconds"});
   require(!(m.contains("gmsh") && m.contains("generator")), "scene: 'mesh' gives both generator and gmsh: a mesh "
           "is generated or read, not both");
   if (const auto file = m.find("gmsh")) {
@@ -95,6 +103,10 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
     if (path.is_relative()) path = std::filesystem::path(directory) / path;
     GmshOptions options;
     if (const auto f = m.find("size_factor")) options.mesh_size_factor = f->as_positive();
+    // Meshing a script is bounded in time and memory: a size far too small is stopped, not waited for.
+    options.max_seconds = 600;
+    if (const auto t = m.find("max_seconds")) options.max_seconds = t->as_positive();
+    options.max_memory_bytes = memory_limit(scene_json).bytes;
     scene.mesh_file = file->as_string();
     scene.mesh_size_factor = options.mesh_size_factor;
     auto mesh = std::make_shared<const Mesh>(import_gmsh(path.string(), options));

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -32,10 +33,11 @@ class GmshImportTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(directory_); }
 
   // Meshes a .geo script with gmsh directly and saves the mesh as a .msh file in the temporary directory.
-  std::string write_msh(const std::string& geo, const std::string& name) const {
+  std::string write_msh(const std::string& geo, const std::string& name, bool binary = false) const {
     const std::string path = (directory_ / name).string();
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("Mesh.Binary", binary ? 1 : 0);
     gmsh::open(data(geo));
     gmsh::model::mesh::generate(gmsh::model::getDimension());
     gmsh::write(path);
@@ -160,6 +162,60 @@ TEST_F(GmshImportTest, Errors) {
 
   // Importing still works after failures: every import has a gmsh session of its own.
   expect_rectangle(import_gmsh(data("rectangle.geo")));
+}
+
+// A .geo script is a program that gmsh runs in a child process: whatever it does is reported, and the
+// caller goes on (issue 11, case 11).
+TEST_F(GmshImportTest, AScriptThatEndsGmshIsReportedAndTheCallerGoesOn) {
+  const fs::path script = directory_ / "exits.geo";
+  std::ofstream(script) << "Point(1) = {0, 0, 0};\nExit;\n";
+  EXPECT_THAT(import_error(script.string()), HasSubstr("does it call 'Exit'?"));
+  expect_rectangle(import_gmsh(data("rectangle.geo")));
+}
+
+TEST_F(GmshImportTest, AStatementMissingItsSemicolonIsNamedAtItsOwnLine) {
+  const fs::path script = directory_ / "semicolon.geo";
+  std::ofstream(script) << "// a comment\nPoint(1) = {0, 0, 0, 1}\n\nPoint(2) = {1, 0, 0, 1};\n";
+  const std::string error = import_error(script.string());
+  EXPECT_THAT(error, HasSubstr("line 4: syntax error"));
+  EXPECT_THAT(error, HasSubstr("line 2 above it does not end with ';': 'Point(1) = {0, 0, 0, 1}'"));
+}
+
+TEST_F(GmshImportTest, WhatAScriptPrintsStaysOutOfTheCallersOutput) {
+  const fs::path script = directory_ / "prints.geo";
+  std::ofstream(script) << "Printf(\"SCRIPT-OUTPUT\");\nInclude \"" << data("rectangle.geo") << "\";\n";
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  const Mesh mesh = import_gmsh(script.string());
+  const std::string out = ::testing::internal::GetCapturedStdout() + ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(out.find("SCRIPT-OUTPUT"), std::string::npos) << out;
+  expect_rectangle(mesh);
+}
+
+TEST_F(GmshImportTest, MeshingPastItsTimeBudgetIsStopped) {
+  GmshOptions options;
+  options.mesh_size_factor = 1e-6;  // some 10^12 triangles: it would mesh for hours
+  options.max_seconds = 1;
+  const auto start = std::chrono::steady_clock::now();
+  std::string error;
+  try {
+    import_gmsh(data("rectangle.geo"), options);
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  EXPECT_THAT(error, HasSubstr("meshing took more than 1 s (mesh.max_seconds) and was stopped"));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30);
+}
+
+TEST_F(GmshImportTest, AMeshFromAScriptIsTheMeshGmshMade) {
+  // The child hands the mesh back as a binary .msh: the coordinates arrive bit for bit, as from gmsh
+  // meshing in this process.
+  const Mesh from_script = import_gmsh(data("box.geo"));
+  const Mesh from_file = import_gmsh(write_msh("box.geo", "box.msh", /*binary=*/true));
+  ASSERT_EQ(from_script.num_nodes(), from_file.num_nodes());
+  ASSERT_EQ(from_script.num_cells(), from_file.num_cells());
+  for (int n = 0; n < from_script.num_nodes(); ++n)
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(from_script.node(n)[d], from_file.node(n)[d]);
 }
 
 }  // namespace
