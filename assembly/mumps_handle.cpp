@@ -57,6 +57,9 @@ void MumpsHandle::run(Job job, const char* phase) {
   if (info1 == kNumericallySingular)
     fail(owner_, ": the matrix is numerically singular (", phase, " failed with INFO(1) = ", info1, ", INFO(2) = ", info2,
          ")");
+  // -13: an allocation inside MUMPS failed (-9 is a work array sized too small, which ICNTL(14) mends).
+  if (info1 == -13)
+    throw OutOfMemory(message(owner_, ": the ", phase, " ran out of memory (INFO(1) = ", info1, ", INFO(2) = ", info2, ")"));
   require(info1 >= 0, owner_, ": the ", phase, " failed with INFO(1) = ", info1, ", INFO(2) = ", info2,
           " (see the MUMPS manual)");
 }

@@ -34,6 +34,7 @@ class CholmodSolver final : public SolverBase {
     cholmod_free_factor(&factor_, &common_);
     cholmod_sparse a = view();
     factor_ = cholmod_analyze(&a, &common_);
+    if (common_.status == CHOLMOD_OUT_OF_MEMORY) throw OutOfMemory(message(name(), ": the analysis ran out of memory"));
     require(factor_ != nullptr, name(), ": the analysis failed with status ", common_.status);
 
     const CsrMatrix& m = matrix();
@@ -54,6 +55,7 @@ class CholmodSolver final : public SolverBase {
       fail(name(), ": the matrix is not positive definite (the factorization broke down at column ",
            factor_->minor, " of the reordered matrix); use umfpack or mumps for indefinite matrices");
     // Positive statuses other than the one above are warnings (a tiny diagonal of L), not failures.
+    if (common_.status == CHOLMOD_OUT_OF_MEMORY) throw OutOfMemory(message(name(), ": the factorization ran out of memory"));
     require(common_.status >= CHOLMOD_OK, name(), ": the factorization failed with status ", common_.status);
   }
 

@@ -70,6 +70,7 @@ class UmfpackSolver final : public SolverBase {
   // Negative statuses are errors; positive ones other than "singular" (handled above) only warn about
   // the determinant over- or underflowing, which we do not use.
   void check(int status, const char* phase) const {
+    if (status == UMFPACK_ERROR_out_of_memory) throw OutOfMemory(message(name(), ": the ", phase, " ran out of memory"));
     require(status >= UMFPACK_OK, name(), ": the ", phase, " failed with status ", status, " (",
             describe(status), ")");
   }

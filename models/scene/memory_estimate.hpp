@@ -13,7 +13,8 @@ struct MemoryEstimate {
 
 // A structured mesh of cells[0] x ... x cells[dim - 1] cells of order `order`.
 MemoryEstimate estimate_structured_run(int dim, const int* cells, int order);
-// The memory this machine has available now (MemAvailable of /proc/meminfo), or 0 when unknown.
+// The memory this process may still use: what the machine has available now (MemAvailable of
+// /proc/meminfo), or less under an address-space limit (ulimit -v) or a cgroup's memory.max; 0 when unknown.
 double available_memory_bytes();
 
 }  // namespace pc

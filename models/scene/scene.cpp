@@ -73,7 +73,7 @@ struct MemoryLimit {
 
 // The machine's available memory, or the user's solver.max_memory_gib.
 MemoryLimit memory_limit(const Json& scene_json) {
-  MemoryLimit limit{available_memory_bytes(), "available on this machine"};
+  MemoryLimit limit{available_memory_bytes(), "available to this run (the machine's free memory, or ulimit -v)"};
   if (const auto solver = scene_json.find("solver"))
     if (const auto cap = solver->find("max_memory_gib")) limit = {cap->as_positive() * 1073741824.0, "allowed by 'solver.max_memory_gib'"};
   return limit;
@@ -537,7 +537,13 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
     const std::string key = o.substr(0, eq);
     json.set_path(key, parse_json_value_from_cli(o.substr(eq + 1), "--set " + key), Json::NewKeys::allow);
   }
-  Scene scene = load_scene(json, std::filesystem::path(path).parent_path().string());
+  Scene scene;
+  try {
+    scene = load_scene(json, std::filesystem::path(path).parent_path().string());
+  } catch (const std::bad_alloc& e) {
+    fail("out of memory while reading the scene '", path, "' and building its mesh: ", e.what(),
+         "; coarsen the mesh, or free memory");
+  }
   scene.file = path;
   scene.overrides = overrides;
   return scene;

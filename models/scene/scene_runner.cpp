@@ -232,7 +232,12 @@ namespace {
 PiezoContactModel build_foundation_model(const Scene& scene, const SceneFoundation& foundation) {
   PiezoContactSpec spec = scene.spec;
   spec.foundation = foundation.law;
-  return build_piezo_contact_model(spec);
+  try {
+    return build_piezo_contact_model(spec);
+  } catch (const std::bad_alloc& e) {
+    fail("out of memory while building the model of the ", foundation.name, " foundation (",
+         spec.mesh->num_cells(), " cells, P", spec.order, "): ", e.what(), "; coarsen the mesh, or free memory");
+  }
 }
 
 }  // namespace
@@ -411,9 +416,11 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     return r.step == 0 ? message("the initial state (t = ", r.time, ")") : message("step ", r.step, " (t = ", r.time, ")");
   };
   const double first_time = options.resume ? options.resume->time : 0.0;  // of this process's part of the run
+  double done_time = options.resume ? options.resume->time : 0.0;
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
     add_phases(r.newton);
     done.steps = r.step;
+    done_time = r.time;
     done.newton_iterations_total += r.newton.iterations;
     done.newton_iterations_max_per_step = std::max(done.newton_iterations_max_per_step, r.newton.iterations);
     require_finite_state(model, when(r));
@@ -475,11 +482,19 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     if (run.completed && !dir.empty()) std::filesystem::remove(checkpoint_path);
   } catch (const Error& e) {
     stopped_in_callback = true;
+    result.message = e.what();
+  } catch (const std::bad_alloc& e) {
+    // Out of memory inside a step (a factorisation's fill, most likely): the step is named, and what has
+    // been written stays; the state is mid-step, so no final tables are written from it.
+    stopped_in_callback = true;
+    result.message = message("out of memory in step ", done.steps + 1, " (from t = ", done_time, "): ", e.what(),
+                             "; coarsen the mesh, or free memory");
+  }
+  if (stopped_in_callback) {
     result.completed = false;
     result.steps = done.steps;
     result.newton_iterations_total = done.newton_iterations_total;
     result.newton_iterations_max_per_step = done.newton_iterations_max_per_step;
-    result.message = e.what();
   }
 
   const Eigen::VectorXd& u = m.values("u");

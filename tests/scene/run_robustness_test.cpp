@@ -188,6 +188,27 @@ TEST_F(RunRobustness, ASecondRunIntoAFolderInUseIsRefused) {
   EXPECT_EQ(third.status, 0) << third.err;
 }
 
+// Memory that runs out (here under ulimit -v, past a user's too generous solver.max_memory_gib) is a
+// clear error naming the phase, never an abort; the summary and the manifest say the run stopped.
+TEST_F(RunRobustness, RunningOutOfMemoryStopsTheRunNamingThePhase) {
+  const auto out = directory_ / "out";
+  const std::string command = "run " + kScene + " --set mesh.nx=300 --set mesh.ny=100 --set time.steps=1 " +
+                              "--set solver.max_memory_gib=100 --only conductive --no-sweep --quiet --out " +
+                              quoted(out.string());
+  const auto log = directory_ / "oom.txt";
+  const int raw = std::system(("ulimit -v 500000; " + std::string(PIEZOCONTACT_RUNNER) + " " + command + " >" +
+                               quoted(log.string()) + " 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 1) << read_text(log);
+  const std::string said = read_text(log);
+  EXPECT_TRUE(std::regex_search(said, std::regex("out of memory (in step 1|while building)"))) << said;
+  if (std::filesystem::exists(out / "conductive" / "summary.json")) {
+    EXPECT_NE(read_text(out / "conductive" / "summary.json").find("\"completed\": false"), std::string::npos);
+  }
+  EXPECT_NE(read_text(out / "manifest.json").find("\"state\": \"stopped\""), std::string::npos)
+      << read_text(out / "manifest.json");
+}
+
 // ---- manifest, stale files, resume (case 5) ---------------------------------------------------------
 
 // The files of a result folder, by relative path (the lock and the manifest left out).

@@ -45,7 +45,7 @@ TEST(SceneProblems, EachProblemIsReportedOnce) {
 // well under a second (nx = 1e9 used to grow to 8 GB and abort); so is a scene "file" without an end.
 TEST(SceneLimits, WhatCannotFitIsRefusedBeforeItIsBuilt) {
   testing::expect_error_containing([] { load_scene_file(kScene, {"mesh.nx=1000000000"}); },
-                                   {"'mesh' (1000000000 x 20 cells, P1) has about", "GiB available on this machine"});
+                                   {"'mesh' (1000000000 x 20 cells, P1) has about", "GiB available to this run"});
   // The paper's mesh needs about 3843 dofs x 8 KiB = 30 MiB: under a limit of 0.01 GiB it is refused ...
   testing::expect_error_containing([] { load_scene_file(kScene, {"solver.max_memory_gib=0.01"}); },
                                    {"more than the 0.01 GiB allowed by 'solver.max_memory_gib'"});
