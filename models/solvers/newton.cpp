@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "assembly/error.hpp"
@@ -122,10 +123,27 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   const std::vector<double> scales = problem.residual_scales();
   std::vector<double> reference(n_blocks);
   for (int b = 0; b < n_blocks; ++b) reference[b] = std::max({norms[b], scales[b], absolute[b], 1e-300});
-  auto residual_converged = [&](const std::vector<double>& r) {
+  auto tolerance = [&](int b) { return std::max(absolute[b], options_.relative_tolerance * reference[b]); };
+  // The round-off floor of each block at the last assembled iterate (kRoundOffFloorFactor); a floor that
+  // is not finite is none, so that it never declares convergence.
+  auto round_off_floors = [&] {
+    std::vector<double> floors = problem.round_off_scales();
+    for (double& f : floors) f = std::isfinite(f) ? kRoundOffFloorFactor * std::numeric_limits<double>::epsilon() * f : 0;
+    return floors;
+  };
+  // Every block within the larger of its tolerance and its floor.
+  auto residual_converged = [&](const std::vector<double>& r, const std::vector<double>& floors) {
     for (int b = 0; b < n_blocks; ++b)
-      if (r[b] > std::max(absolute[b], options_.relative_tolerance * reference[b])) return false;
+      if (r[b] > std::max(tolerance(b), floors[b])) return false;
     return true;
+  };
+  // Why a residual met the test: its tolerance, or a block's round-off floor.
+  auto converged_message = [&](const std::vector<double>& r, const std::vector<double>& floors, std::string met) {
+    for (int b = 0; b < n_blocks; ++b)
+      if (r[b] > tolerance(b))
+        return message(met, " at the round-off floor of block '", report.blocks[b], "' (residual ", r[b], ", floor ",
+                       floors[b], ", tolerance ", tolerance(b), ")");
+    return met;
   };
   // Convergence is never declared on a non-finite residual, increment or iterate: each is Diverged,
   // naming the block.
@@ -139,7 +157,9 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   if (auto r = not_finite(norms, "the initial residual")) return *r;
   if (auto r = not_finite(block_norms(blocks, problem.free_values()), "the initial iterate")) return *r;
   if (auto r = not_finite(scales, "the size of the terms summed in the initial residual")) return *r;
-  if (residual_converged(norms) || problem.residual().size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
+  if (problem.residual().size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
+  if (const std::vector<double> floors = round_off_floors(); residual_converged(norms, floors))
+    return finish(NewtonOutcome::Converged, converged_message(norms, floors, "initial state satisfies the tolerances"));
   const double merit0 = merit(norms, reference);
   const double divergence_bound = options_.divergence_factor * std::max(merit0, 1.0);
 
@@ -195,7 +215,9 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     if (auto r = not_finite(norms, message("iteration ", iteration, ": the residual"))) return *r;
     const std::vector<double> sizes = block_norms(blocks, problem.free_values());
     if (auto r = not_finite(sizes, message("iteration ", iteration, ": the iterate"))) return *r;
-    if (residual_converged(norms)) return finish(NewtonOutcome::Converged, "residual tolerance met");
+    const std::vector<double> floors = round_off_floors();
+    if (residual_converged(norms, floors))
+      return finish(NewtonOutcome::Converged, converged_message(norms, floors, "residual tolerance met"));
     bool small_step = alpha == 1;
     for (int b = 0; b < n_blocks; ++b)
       small_step = small_step && steps[b] <= options_.increment_tolerance * std::max(sizes[b], 1e-300);
