@@ -275,6 +275,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     add_phases(r.newton);
     done.steps = r.step;
     done.newton_iterations_total += r.newton.iterations;
+    done.cutbacks += r.cutbacks;
     done.newton_iterations_max_per_step = std::max(done.newton_iterations_max_per_step, r.newton.iterations);
     require_finite_state(model, when(r));
     const std::vector<double> row = {r.time, probe(model, locator, "u", 1, scene.output.corner),
@@ -319,6 +320,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     result.steps = run.steps;
     result.newton_iterations_total = run.newton_iterations_total;
     result.newton_iterations_max_per_step = run.newton_iterations_max_per_step;
+    result.cutbacks = run.cutbacks;
     result.message = run.message;
   } catch (const Error& e) {
     stopped_in_callback = true;
@@ -326,6 +328,7 @@ FoundationRunResult FoundationRun::run(const std::string& dir, bool progress, in
     result.steps = done.steps;
     result.newton_iterations_total = done.newton_iterations_total;
     result.newton_iterations_max_per_step = done.newton_iterations_max_per_step;
+    result.cutbacks = done.cutbacks;
     result.message = e.what();
   }
 

@@ -278,5 +278,28 @@ TEST(NonlinearProblem, AResidualAtItsRoundOffFloorHasConverged) {
   EXPECT_EQ(NewtonSolver().solve(without_floor).outcome, NewtonOutcome::MaxIterations);
 }
 
+// A tolerance below min_relative_tolerance() (from x = 2, reference 1: 1e-16 asks for a residual below
+// 1e-16, the floor is 1.8e-10) ends the solve as RoundOffFloor after two iterates at the floor, naming the
+// block, the floor and the tolerance; at min_relative_tolerance() the floor counts.
+TEST(NonlinearProblem, AToleranceBelowTheRoundOffFloorStopsTheSolve) {
+  NewtonOptions options;
+  options.absolute_tolerance = 0;
+  options.relative_tolerance = 1e-16;
+  RoundOffLine below(2.0);
+  const NewtonReport report = NewtonSolver(options).solve(below);
+  EXPECT_EQ(report.outcome, NewtonOutcome::RoundOffFloor) << report.message;
+  EXPECT_EQ(report.iterations, 2);
+  for (const std::string part : {"block 'x'", "stagnates at its round-off floor 1.776356839e-10",
+                                 "above the tolerance 1e-16 (relative_tolerance 1e-16 times 1)"})
+    EXPECT_NE(report.message.find(part), std::string::npos) << report.message;
+  EXPECT_EQ(to_string(report.outcome), "round_off_floor");
+
+  options.relative_tolerance = min_relative_tolerance();
+  RoundOffLine at_limit(2.0);
+  const NewtonReport converged = NewtonSolver(options).solve(at_limit);
+  ASSERT_TRUE(converged.converged()) << converged.message;
+  EXPECT_EQ(converged.iterations, 1);
+}
+
 }  // namespace
 }  // namespace pc

@@ -1,5 +1,6 @@
-// Newton and the residual's round-off floor, on the paper's scene (issue 11 case 9): a problem whose forces
-// cancel to round-off converges.
+// Newton and the residual's round-off floor, on the paper's scene (issue 11 case 9, issue 16): a problem
+// whose forces cancel to round-off converges, and a tolerance below the floor stops the run with the floor
+// named, without cut-backs.
 #include <gtest/gtest.h>
 
 #include "models/scene/scene_runner.hpp"
@@ -24,6 +25,33 @@ TEST(RoundOffFloor, AnAllClampedConductiveSceneConvergesAtEveryStep) {
   EXPECT_LE(r.newton_iterations_max_per_step, 2);
   EXPECT_NEAR(r.max_abs_ux, 0.0, 1e-20);
   EXPECT_NEAR(r.phi_min, -48.0, 1.0);
+}
+
+// solver.relative_tolerance = 1e-15 ran for ever (cut-back after cut-back, dt / 1024 after ten
+// minutes, silently). Newton now stops the step when the residual stagnates at its floor above the
+// tolerance, and the run stops there with that message, without a cut-back: at t = 0 or 0.01 on the
+// paper's mesh (a step may still meet the tolerance by chance, or the increment test).
+TEST(RoundOffFloor, AnUnreachableToleranceStopsTheRunWithoutCutBacksNamingTheFloor) {
+  // (time.max_attempts bounds the run that cut back for ever.)
+  Scene scene = load_scene_file(kScene, {"time.steps=20", "time.max_attempts=100"});
+  scene.newton.relative_tolerance = 1e-15;
+  const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
+  EXPECT_FALSE(r.completed);
+  EXPECT_LE(r.steps, 2);
+  EXPECT_EQ(r.cutbacks, 0) << r.message;
+  EXPECT_LE(r.newton_iterations_total, (r.steps + 1) * scene.newton.max_iterations) << r.message;
+  EXPECT_CONTAINS(r.message, "failed (round_off_floor: the residual of block 'v'");
+  EXPECT_CONTAINS(r.message, "stagnates at its round-off floor");
+  EXPECT_CONTAINS(r.message, "relative_tolerance 1e-15");
+  EXPECT_CONTAINS(r.message, "without cutting the step back");
+}
+
+// At the limit the floor counts as convergence: the shipped scene with the smallest tolerance completes.
+TEST(RoundOffFloor, TheSmallestAcceptedToleranceConverges) {
+  const Scene scene = load_scene_file(kScene, {"mesh.nx=15", "mesh.ny=5", "time.steps=10", "solver.relative_tolerance=2e-15"});
+  const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
+  ASSERT_TRUE(r.completed) << r.message;
+  EXPECT_LE(r.newton_iterations_max_per_step, 12);
 }
 
 }  // namespace
