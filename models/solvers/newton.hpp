@@ -22,7 +22,7 @@ namespace pc {
 // leaves a safety factor of about 10.
 inline constexpr double kRoundOffFloorFactor = 8;
 // The smallest meaningful relative tolerance, kRoundOffFloorFactor machine epsilons (1.8e-15): a smaller
-// one asks a block whose terms do not cancel for a residual below its floor.
+// one asks a block whose terms do not cancel for a residual below its floor. The scene reader refuses it.
 double min_relative_tolerance();
 
 struct NewtonOptions {

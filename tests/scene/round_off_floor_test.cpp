@@ -1,9 +1,10 @@
 // Newton and the residual's round-off floor, on the paper's scene (issue 11 case 9, issue 16): a problem
-// whose forces cancel to round-off converges, and a tolerance below the floor stops the run with the floor
-// named, without cut-backs.
+// whose forces cancel to round-off converges, and a tolerance below the floor is refused when the scene is
+// read, or, given through the API, stops the run with the floor named, without cut-backs.
 #include <gtest/gtest.h>
 
 #include "models/scene/scene_runner.hpp"
+#include "support/error_and_temp_dir.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {
@@ -27,7 +28,16 @@ TEST(RoundOffFloor, AnAllClampedConductiveSceneConvergesAtEveryStep) {
   EXPECT_NEAR(r.phi_min, -48.0, 1.0);
 }
 
-// solver.relative_tolerance = 1e-15 ran for ever (cut-back after cut-back, dt / 1024 after ten
+// The smallest meaningful tolerance is a few machine epsilons (min_relative_tolerance()): a smaller one is
+// refused when the scene is read, naming the key, the value and that limit; one just above it is accepted.
+TEST(RoundOffFloor, AToleranceBelowTheFloorIsRefusedWhenTheSceneIsRead) {
+  testing::expect_error_containing([] { load_scene_file(kScene, {"solver.relative_tolerance=1e-15"}); },
+                                   {"'solver.relative_tolerance' = 1e-15", "round-off floor", "1.776356839e-15"});
+  EXPECT_NO_THROW(load_scene_file(kScene, {"solver.relative_tolerance=2e-15"}));
+  EXPECT_NO_THROW(load_scene_file(kScene, {"solver.relative_tolerance=1e-14"}));
+}
+
+// Given through the API, the same tolerance ran for ever (cut-back after cut-back, dt / 1024 after ten
 // minutes, silently). Newton now stops the step when the residual stagnates at its floor above the
 // tolerance, and the run stops there with that message, without a cut-back: at t = 0 or 0.01 on the
 // paper's mesh (a step may still meet the tolerance by chance, or the increment test).
