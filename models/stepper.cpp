@@ -90,7 +90,8 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
     if (!report.converged()) {
       restore_unknowns(model, saved);
       model.set_time(t);
-      const std::string failed = message("step from t = ", t, " failed (", to_string(report.outcome), ": ", report.message, ")");
+      const std::string failed =
+          message("step from t = ", t, " failed (", to_string(report.outcome), ": ", report.message, ")");
       // A residual at its round-off floor above the tolerance stays there at any step size: no cut-back.
       if (report.outcome == NewtonOutcome::RoundOffFloor) {
         summary.message = failed + "; the run stops without cutting the step back";

@@ -436,8 +436,9 @@ Scene load_scene(const Json& json, const std::string& directory) {
       // NewtonOutcome::RoundOffFloor): refused here, before anything is built.
       scene.newton.relative_tolerance = x->as_number_in(0, 1);
       require(scene.newton.relative_tolerance >= min_relative_tolerance(), "scene: '", x->path(), "' = ",
-              scene.newton.relative_tolerance, " is below the residual's round-off floor: the smallest relative tolerance ",
-              "Newton can meet is ", min_relative_tolerance(), " (", kRoundOffFloorFactor, " machine epsilons)");
+              scene.newton.relative_tolerance, " is below the residual's round-off floor: the smallest relative ",
+              "tolerance Newton can meet is ", min_relative_tolerance(), " (", kRoundOffFloorFactor,
+              " machine epsilons)");
     }
     if (const auto x = s->find("line_search")) scene.newton.line_search = x->as_bool();
     if (const auto x = s->find("watchdog")) scene.newton.watchdog = x->as_int_at_least(0);

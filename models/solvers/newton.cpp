@@ -131,7 +131,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   // is not finite is none, so that it never declares convergence.
   auto round_off_floors = [&] {
     std::vector<double> floors = problem.round_off_scales();
-    for (double& f : floors) f = std::isfinite(f) ? kRoundOffFloorFactor * std::numeric_limits<double>::epsilon() * f : 0;
+    for (double& f : floors)
+      f = std::isfinite(f) ? kRoundOffFloorFactor * std::numeric_limits<double>::epsilon() * f : 0;
     return floors;
   };
   const bool floor_counts = options_.relative_tolerance >= min_relative_tolerance();
@@ -155,7 +156,8 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   // With a tolerance below the floor, the residual of every block within its floor (twice in a row, so that
   // a step that still lands lower is taken) but above its tolerance stagnates there: the solve stops.
   int iterates_at_floor = 0;
-  auto stagnated_at_floor = [&](const std::vector<double>& r, const std::vector<double>& floors) -> std::optional<NewtonReport> {
+  auto stagnated_at_floor = [&](const std::vector<double>& r,
+                                const std::vector<double>& floors) -> std::optional<NewtonReport> {
     iterates_at_floor = !floor_counts && within(r, floors, true) ? iterates_at_floor + 1 : 0;
     if (iterates_at_floor < 2) return std::nullopt;
     int worst = 0;

@@ -58,7 +58,8 @@ TEST(RoundOffFloor, AnUnreachableToleranceStopsTheRunWithoutCutBacksNamingTheFlo
 
 // At the limit the floor counts as convergence: the shipped scene with the smallest tolerance completes.
 TEST(RoundOffFloor, TheSmallestAcceptedToleranceConverges) {
-  const Scene scene = load_scene_file(kScene, {"mesh.nx=15", "mesh.ny=5", "time.steps=10", "solver.relative_tolerance=2e-15"});
+  const Scene scene =
+      load_scene_file(kScene, {"mesh.nx=15", "mesh.ny=5", "time.steps=10", "solver.relative_tolerance=2e-15"});
   const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
   ASSERT_TRUE(r.completed) << r.message;
   EXPECT_LE(r.newton_iterations_max_per_step, 12);
