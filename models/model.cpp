@@ -61,6 +61,13 @@ std::string join(const std::vector<std::string>& names) {
   return out.empty() ? "none" : out;
 }
 
+// One value per unknown, in the layout's order (its blocks').
+std::vector<double> in_layout_order(const DofLayout& l, const std::map<std::string, double>& per_unknown) {
+  std::vector<double> values;
+  for (int f = 0; f < l.num_fields(); ++f) values.push_back(per_unknown.at(l.field_name(f)));
+  return values;
+}
+
 }  // namespace
 
 Model::Model(std::shared_ptr<const Mesh> mesh) : mesh_(std::move(mesh)) {
@@ -466,19 +473,40 @@ void Model::assemble(bool tangent) {
     field_residuals_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
     brick_residual[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
     residual_scales_[u] = 0;
+    round_off_scales_[u] = 0;
   }
-  // The largest single brick contribution on the free dofs: the residual is a sum of such terms, so
-  // round-off leaves it at about machine epsilon times this scale, whatever the first residual was.
-  auto measure = [&](const std::string& u, const Eigen::VectorXd& r) {
+  // The largest single brick contribution on the free dofs (Newton's reference), and its gross size, the
+  // residual's round-off floor over machine epsilon (round_off_scales).
+  const auto free_norm = [&](const std::string& u, auto&& row_value) {
     const auto global = s.layout.global_indices(s.layout.field_index(u));
     double sum = 0;
-    for (int d = 0; d < int(r.size()); ++d)
-      if (global[d] >= 0) sum += r[d] * r[d];
-    residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(sum));
+    for (int d = 0; d < int(global.size()); ++d)
+      if (global[d] >= 0) {
+        const double value = row_value(d);
+        sum += value * value;
+      }
+    return std::sqrt(sum);
+  };
+  auto measure = [&](const std::string& u, const Eigen::VectorXd& r, double gross) {
+    const double net = free_norm(u, [&](int d) { return r[d]; });
+    residual_scales_[u] = std::max(residual_scales_[u], net);
+    round_off_scales_[u] = std::max({round_off_scales_[u], net, gross});
+  };
+  // A linear piece K x is measured by the norm of (|K| |x|)_i = sum_j |K_ij| |x_j| as well: the computed
+  // product is off by at most a few eps (|K| |x|)_i in row i however much its terms cancel (Oettli and
+  // Prager's componentwise bound), while its net size K x vanishes where they balance exactly (a uniform
+  // piezoelectric stress has no net force on an interior node), which leaves a net scale that is itself
+  // round-off.
+  auto gross_size = [&](const std::string& u, const CsrMatrix& K, const Eigen::VectorXd& x) {
+    return free_norm(u, [&](int r) {
+      double row = 0;
+      for (CsrMatrix::InnerIterator it(K, r); it; ++it) row += std::abs(it.value() * x[it.col()]);
+      return row;
+    });
   };
   auto measure_and_add = [&](const std::string& u) {
     Eigen::VectorXd& r = brick_residual.at(u);
-    measure(u, r);
+    measure(u, r, 0);
     field_residuals_.at(u) += r;
     r.setZero();
   };
@@ -544,15 +572,17 @@ void Model::assemble(bool tangent) {
     // The pieces K_k x_k and R0 are measured one by one: they may cancel within the brick (k_e phi
     // against k_e phi_f), and round-off is relative to each of them.
     for (const auto& [u, r0] : state.r0) {
-      measure(u, r0);
+      measure(u, r0, 0);
       brick_residual.at(u) += r0;
       touched.insert(u);
     }
     for (const BoundTerm& bt : state.terms)
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
         const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
-        const Eigen::VectorXd piece = bt.assembly->block(int(k)) * this->values(bt.trial_fields[k]);
-        measure(u, piece);
+        const CsrMatrix& K = bt.assembly->block(int(k));
+        const Eigen::VectorXd& x = this->values(bt.trial_fields[k]);
+        const Eigen::VectorXd piece = K * x;
+        measure(u, piece, gross_size(u, K, x));
         brick_residual.at(u) += piece;
         touched.insert(u);
       }
@@ -596,12 +626,8 @@ std::vector<ProblemBlock> Model::blocks() const {
   return blocks;
 }
 
-std::vector<double> Model::residual_scales() const {
-  const DofLayout& l = layout();
-  std::vector<double> scales;
-  for (int f = 0; f < l.num_fields(); ++f) scales.push_back(residual_scales_.at(l.field_name(f)));
-  return scales;
-}
+std::vector<double> Model::residual_scales() const { return in_layout_order(layout(), residual_scales_); }
+std::vector<double> Model::round_off_scales() const { return in_layout_order(layout(), round_off_scales_); }
 
 Eigen::VectorXd Model::free_values() const {
   const DofLayout& l = layout();

@@ -114,8 +114,12 @@ class Model : public DataView, public NonlinearProblem {
   // The unknowns, in the layout's order.
   std::vector<ProblemBlock> blocks() const override;
   // Per unknown, the norm (on free dofs) of the largest single brick contribution to the last residual:
-  // the scale of the forces that balance, against which round-off is measured.
+  // the scale of the forces that balance, Newton's reference.
   std::vector<double> residual_scales() const override;
+  // Per unknown, the same with each linear piece K x measured by the norm of |K| |x| (rows
+  // sum_j |K_ij| |x_j|) instead of K x: the size of the products before they cancel, which sets the
+  // residual's round-off floor (nonlinear bricks and the R0 pieces are measured by their net size).
+  std::vector<double> round_off_scales() const override;
   // Unknowns on free dofs, and their update x <- x + step.
   Eigen::VectorXd free_values() const override;
   void set_free_values(const Eigen::VectorXd& x) override;
@@ -159,6 +163,7 @@ class Model : public DataView, public NonlinearProblem {
   std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
   std::map<std::string, Eigen::VectorXd> field_residuals_;
   std::map<std::string, double> residual_scales_;
+  std::map<std::string, double> round_off_scales_;
   Eigen::VectorXd residual_;
   std::uint64_t clock_ = 0;           // version source for constants and data fields
   std::uint64_t linear_version_ = 1;  // changes when a linear brick's blocks change

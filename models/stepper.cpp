@@ -104,13 +104,19 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
     if (!report.converged()) {
       restore_unknowns(model, saved);
       model.set_time(t);
+      const std::string failed =
+          message("step from t = ", t, " failed (", to_string(report.outcome), ": ", report.message, ")");
+      // A residual at its round-off floor above the tolerance stays there at any step size: no cut-back.
+      if (report.outcome == NewtonOutcome::RoundOffFloor) {
+        summary.message = failed + "; the run stops without cutting the step back";
+        break;
+      }
       ++record.cutbacks;
       ++state.cutbacks;
       state.successes = 0;
       dt = attempt * o.cutback_factor;
       if (dt < o.min_step) {
-        summary.message = message("step from t = ", t, " failed (", to_string(report.outcome), ": ", report.message,
-                                  ") and the step would fall below the floor ", o.min_step);
+        summary.message = message(failed, " and the step would fall below the floor ", o.min_step);
         dt = attempt;  // a resumed run retries this step as it was
         break;
       }

@@ -1,5 +1,6 @@
 #pragma once
-// The time loop: one Newton solve per step, step cut-back on failure (down to a floor), regrowth toward
+// The time loop: one Newton solve per step, step cut-back on failure (down to a floor; but a residual
+// stagnating at its round-off floor, NewtonOutcome::RoundOffFloor, stops the run at once), regrowth toward
 // the nominal step after successes, a progress callback after every step and an output callback every N
 // steps (and at the start and the end), so that a long run writes its results as it goes. What a recipe
 // solves before the first step (the piezoelectric model's initial potential) is its own start hook.

@@ -450,7 +450,15 @@ Scene load_scene(const Json& json, const std::string& directory) {
     scene.newton.linear_solver =
         chosen_entry(*s, "linear", linear_solver_registry(), NewtonOptions{}.linear_solver).name;
     if (const auto x = s->find("max_iterations")) scene.newton.max_iterations = x->as_int_at_least(1);
-    if (const auto x = s->find("relative_tolerance")) scene.newton.relative_tolerance = x->as_number_in(0, 1);
+    if (const auto x = s->find("relative_tolerance")) {
+      // A tolerance below the residual's round-off floor could never be met (Newton would stop the run,
+      // NewtonOutcome::RoundOffFloor): refused here, before anything is built.
+      scene.newton.relative_tolerance = x->as_number_in(0, 1);
+      require(scene.newton.relative_tolerance >= min_relative_tolerance(), "scene: '", x->path(), "' = ",
+              scene.newton.relative_tolerance, " is below the residual's round-off floor: the smallest relative ",
+              "tolerance Newton can meet is ", min_relative_tolerance(), " (", kRoundOffFloorFactor,
+              " machine epsilons)");
+    }
     if (const auto x = s->find("line_search")) scene.newton.line_search = x->as_bool();
     if (const auto x = s->find("watchdog")) scene.newton.watchdog = x->as_int_at_least(0);
     if (const auto x = s->find("cutback_factor")) {

@@ -411,6 +411,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     done.steps = options.resume->steps;
     done.newton_iterations_total = options.resume->newton_iterations_total;
     done.newton_iterations_max_per_step = options.resume->newton_iterations_max_per_step;
+    done.cutbacks = options.resume->cutbacks;
   }
   auto when = [](const StepRecord& r) {
     return r.step == 0 ? message("the initial state (t = ", r.time, ")") : message("step ", r.step, " (t = ", r.time, ")");
@@ -422,6 +423,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     done.steps = r.step;
     done_time = r.time;
     done.newton_iterations_total += r.newton.iterations;
+    done.cutbacks += r.cutbacks;
     done.newton_iterations_max_per_step = std::max(done.newton_iterations_max_per_step, r.newton.iterations);
     require_finite_state(model, when(r));
     const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
@@ -477,6 +479,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     result.steps = run.steps;
     result.newton_iterations_total = run.newton_iterations_total;
     result.newton_iterations_max_per_step = run.newton_iterations_max_per_step;
+    result.cutbacks = run.cutbacks;
     result.message = run.message;
     // A completed run has nothing to resume: its checkpoint would only be mistaken for a stopped run's.
     if (run.completed && !dir.empty()) std::filesystem::remove(checkpoint_path);
@@ -495,6 +498,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     result.steps = done.steps;
     result.newton_iterations_total = done.newton_iterations_total;
     result.newton_iterations_max_per_step = done.newton_iterations_max_per_step;
+    result.cutbacks = done.cutbacks;
   }
 
   const Eigen::VectorXd& u = m.values("u");

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "assembly/error.hpp"
@@ -35,12 +36,15 @@ double merit(const std::vector<double>& norms, const std::vector<double>& refere
 
 }  // namespace
 
+double min_relative_tolerance() { return kRoundOffFloorFactor * std::numeric_limits<double>::epsilon(); }
+
 std::string to_string(NewtonOutcome outcome) {
   switch (outcome) {
     case NewtonOutcome::Converged: return "converged";
     case NewtonOutcome::MaxIterations: return "max_iterations";
     case NewtonOutcome::Diverged: return "diverged";
     case NewtonOutcome::SingularTangent: return "singular_tangent";
+    case NewtonOutcome::RoundOffFloor: return "round_off_floor";
   }
   return "unknown";
 }
@@ -122,10 +126,50 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   const std::vector<double> scales = problem.residual_scales();
   std::vector<double> reference(n_blocks);
   for (int b = 0; b < n_blocks; ++b) reference[b] = std::max({norms[b], scales[b], absolute[b], 1e-300});
-  auto residual_converged = [&](const std::vector<double>& r) {
+  auto tolerance = [&](int b) { return std::max(absolute[b], options_.relative_tolerance * reference[b]); };
+  // The round-off floor of each block at the last assembled iterate (kRoundOffFloorFactor); a floor that
+  // is not finite is none, so that it never declares convergence.
+  auto round_off_floors = [&] {
+    std::vector<double> floors = problem.round_off_scales();
+    for (double& f : floors)
+      f = std::isfinite(f) ? kRoundOffFloorFactor * std::numeric_limits<double>::epsilon() * f : 0;
+    return floors;
+  };
+  const bool floor_counts = options_.relative_tolerance >= min_relative_tolerance();
+  // Every block within its tolerance, or within the larger of its tolerance and its floor.
+  auto within = [&](const std::vector<double>& r, const std::vector<double>& floors, bool or_floor) {
     for (int b = 0; b < n_blocks; ++b)
-      if (r[b] > std::max(absolute[b], options_.relative_tolerance * reference[b])) return false;
+      if (r[b] > std::max(tolerance(b), or_floor ? floors[b] : 0.0)) return false;
     return true;
+  };
+  auto residual_converged = [&](const std::vector<double>& r, const std::vector<double>& floors) {
+    return within(r, floors, floor_counts);
+  };
+  // Why a residual met the test: its tolerance, or a block's round-off floor.
+  auto converged_message = [&](const std::vector<double>& r, const std::vector<double>& floors, std::string met) {
+    for (int b = 0; b < n_blocks; ++b)
+      if (r[b] > tolerance(b))
+        return message(met, " at the round-off floor of block '", report.blocks[b], "' (residual ", r[b], ", floor ",
+                       floors[b], ", tolerance ", tolerance(b), ")");
+    return met;
+  };
+  // With a tolerance below the floor, the residual of every block within its floor (twice in a row, so that
+  // a step that still lands lower is taken) but above its tolerance stagnates there: the solve stops.
+  int iterates_at_floor = 0;
+  auto stagnated_at_floor = [&](const std::vector<double>& r,
+                                const std::vector<double>& floors) -> std::optional<NewtonReport> {
+    iterates_at_floor = !floor_counts && within(r, floors, true) ? iterates_at_floor + 1 : 0;
+    if (iterates_at_floor < 2) return std::nullopt;
+    int worst = 0;
+    for (int b = 0; b < n_blocks; ++b)
+      if (r[b] / std::max(tolerance(b), 1e-300) > r[worst] / std::max(tolerance(worst), 1e-300)) worst = b;
+    return finish(NewtonOutcome::RoundOffFloor,
+                  message("the residual of block '", report.blocks[worst], "' (", r[worst],
+                          ") stagnates at its round-off floor ", floors[worst], " (", kRoundOffFloorFactor,
+                          " eps times the gross size of its terms), above the tolerance ", tolerance(worst),
+                          " (relative_tolerance ", options_.relative_tolerance, " times ", reference[worst],
+                          "); a relative tolerance below ", min_relative_tolerance(),
+                          " cannot be met, and no smaller time step lowers a round-off floor"));
   };
   // Convergence is never declared on a non-finite residual, increment or iterate: each is Diverged,
   // naming the block.
@@ -139,7 +183,11 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   if (auto r = not_finite(norms, "the initial residual")) return *r;
   if (auto r = not_finite(block_norms(blocks, problem.free_values()), "the initial iterate")) return *r;
   if (auto r = not_finite(scales, "the size of the terms summed in the initial residual")) return *r;
-  if (residual_converged(norms) || problem.residual().size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
+  if (problem.residual().size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
+  if (const std::vector<double> floors = round_off_floors(); residual_converged(norms, floors))
+    return finish(NewtonOutcome::Converged, converged_message(norms, floors, "initial state satisfies the tolerances"));
+  else if (auto r = stagnated_at_floor(norms, floors))
+    return *r;
   const double merit0 = merit(norms, reference);
   const double divergence_bound = options_.divergence_factor * std::max(merit0, 1.0);
 
@@ -195,11 +243,14 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     if (auto r = not_finite(norms, message("iteration ", iteration, ": the residual"))) return *r;
     const std::vector<double> sizes = block_norms(blocks, problem.free_values());
     if (auto r = not_finite(sizes, message("iteration ", iteration, ": the iterate"))) return *r;
-    if (residual_converged(norms)) return finish(NewtonOutcome::Converged, "residual tolerance met");
+    const std::vector<double> floors = round_off_floors();
+    if (residual_converged(norms, floors))
+      return finish(NewtonOutcome::Converged, converged_message(norms, floors, "residual tolerance met"));
     bool small_step = alpha == 1;
     for (int b = 0; b < n_blocks; ++b)
       small_step = small_step && steps[b] <= options_.increment_tolerance * std::max(sizes[b], 1e-300);
     if (small_step) return finish(NewtonOutcome::Converged, "increment tolerance met");
+    if (auto r = stagnated_at_floor(norms, floors)) return *r;
     const double m = merit(norms, reference);
     if (m > divergence_bound)
       return finish(NewtonOutcome::Diverged, message("iteration ", iteration, ": the scaled residual grew by more than ",

@@ -14,12 +14,27 @@
 
 namespace pc {
 
+// The residual's round-off floor: block b's residual cannot be resolved below
+//   floor_b = kRoundOffFloorFactor * eps * NonlinearProblem::round_off_scales()[b]
+// (for a Model, the gross size |K| |x| of the terms it sums, at the current iterate). Measured residuals
+// that stagnate at round-off are 0.2 to 0.85 eps times that scale (the paper's scene in P1 and P2,
+// triangles and quadrilaterals, c_nu up to 1e16, every side clamped, the strip and the 3D box), so 8
+// leaves a safety factor of about 10.
+inline constexpr double kRoundOffFloorFactor = 8;
+// The smallest meaningful relative tolerance, kRoundOffFloorFactor machine epsilons (1.8e-15): a smaller
+// one asks a block whose terms do not cancel for a residual below its floor. The scene reader refuses it.
+double min_relative_tolerance();
+
 struct NewtonOptions {
   int max_iterations = 25;
-  // Block b has converged when ||R_b|| <= max(absolute, relative * reference_b), where reference_b is the
-  // larger of the block's first residual and the scale of the forces that balance in it (the largest
-  // single term, NonlinearProblem::residual_scales): a residual cannot drop below round-off of the
-  // terms it sums, however small the first residual of a step was.
+  // Block b has converged when ||R_b|| <= max(absolute, relative * reference_b, floor_b), where
+  // reference_b is the larger of the block's first residual and the scale of the forces that balance in
+  // it (the largest single term, NonlinearProblem::residual_scales), and floor_b is its round-off floor
+  // above: a residual cannot drop below round-off of the terms it sums, however small the first residual
+  // of a step was or however much those terms cancel (every side clamped: the net terms are round-off
+  // themselves). A relative tolerance below min_relative_tolerance() does not count the floor: a residual
+  // that stagnates there above the tolerance ends the solve as RoundOffFloor, which no smaller time step
+  // can mend.
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 1e-14;
   std::map<std::string, double> absolute_tolerances;  // per block, overriding absolute_tolerance
@@ -53,7 +68,7 @@ struct NewtonOptions {
   std::string condensation = "schur";
 };
 
-enum class NewtonOutcome { Converged, MaxIterations, Diverged, SingularTangent };
+enum class NewtonOutcome { Converged, MaxIterations, Diverged, SingularTangent, RoundOffFloor };
 std::string to_string(NewtonOutcome outcome);
 
 struct NewtonIteration {

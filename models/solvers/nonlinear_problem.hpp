@@ -40,9 +40,13 @@ class NonlinearProblem {
 
   // The blocks, in order, covering x.
   virtual std::vector<ProblemBlock> blocks() const = 0;
-  // Per block, the size of the largest single term the last residual summed: round-off of the residual is
-  // measured against it.
+  // Per block, the size of the largest single term the last residual summed: the reference of Newton's
+  // relative test, besides the block's first residual.
   virtual std::vector<double> residual_scales() const = 0;
+  // Per block, the gross size of the terms the last residual summed, before they cancel (for a linear term
+  // K x, the norm of |K| |x|): the residual's round-off floor is a few machine epsilons times it, however
+  // small the net terms are. A problem that cannot tell defaults to residual_scales().
+  virtual std::vector<double> round_off_scales() const { return residual_scales(); }
 
   virtual Eigen::VectorXd free_values() const = 0;
   virtual void set_free_values(const Eigen::VectorXd& x) = 0;

@@ -232,5 +232,74 @@ TEST(NonlinearProblem, ASingularLinearPartIsSchurCondensedOrSolvedInFullFromThen
   EXPECT_EQ(again.factorizations, again.iterations);
 }
 
+// R(x) = x - 1 plus a round-off of 5e-12 (alternating, whatever x is), the net size of its terms that
+// round-off too, and their gross size 1e5: the round-off floor (kRoundOffFloorFactor) is
+// 8 eps 1e5 = 1.8e-10. Like a model with every side clamped, whose forces cancel on every free node.
+class RoundOffLine : public NonlinearProblem {
+ public:
+  explicit RoundOffLine(double x0) : x_(Eigen::VectorXd::Constant(1, x0)) {}
+  void assemble(bool) override {
+    ++assemblies_;
+    residual_ = Eigen::VectorXd::Constant(1, x_[0] - 1 + (assemblies_ % 2 ? 5e-12 : -3.5e-12));
+  }
+  const Eigen::VectorXd& residual() const override { return residual_; }
+  const CsrMatrix& jacobian() const override { return jacobian_; }
+  const CsrMatrix& linear_jacobian() override { return jacobian_; }
+  std::uint64_t linear_jacobian_version() override { return 1; }
+  const std::vector<int>& nonlinear_dofs() override { return nonlinear_; }
+  std::vector<ProblemBlock> blocks() const override { return {{"x", 0, 1}}; }
+  std::vector<double> residual_scales() const override { return {std::max(std::abs(residual_[0]), 5e-12)}; }
+  std::vector<double> round_off_scales() const override { return {gross_}; }
+  Eigen::VectorXd free_values() const override { return x_; }
+  void set_free_values(const Eigen::VectorXd& x) override { x_ = x; }
+  void add_to_free_values(const Eigen::VectorXd& step) override { x_ += step; }
+  std::map<std::string, double> diagnostics() const override { return {}; }
+
+  double gross_ = 1e5;
+
+ private:
+  int assemblies_ = 0;
+  Eigen::VectorXd x_, residual_;
+  CsrMatrix jacobian_ = from_triplets(1, {{0, 0, 1}});
+  std::vector<int> nonlinear_ = {0};
+};
+
+// At the solution the residual and its reference are round-off: the relative test alone never passes
+// (25 iterations), the floor does at once.
+TEST(NonlinearProblem, AResidualAtItsRoundOffFloorHasConverged) {
+  RoundOffLine at_floor(1.0);
+  const NewtonReport report = NewtonSolver().solve(at_floor);
+  ASSERT_TRUE(report.converged()) << report.message;
+  EXPECT_EQ(report.iterations, 0);
+  EXPECT_NE(report.message.find("at the round-off floor of block 'x'"), std::string::npos) << report.message;
+
+  RoundOffLine without_floor(1.0);
+  without_floor.gross_ = 0;  // the floor is zero: only the relative test
+  EXPECT_EQ(NewtonSolver().solve(without_floor).outcome, NewtonOutcome::MaxIterations);
+}
+
+// A tolerance below min_relative_tolerance() (from x = 2, reference 1: 1e-16 asks for a residual below
+// 1e-16, the floor is 1.8e-10) ends the solve as RoundOffFloor after two iterates at the floor, naming the
+// block, the floor and the tolerance; at min_relative_tolerance() the floor counts.
+TEST(NonlinearProblem, AToleranceBelowTheRoundOffFloorStopsTheSolve) {
+  NewtonOptions options;
+  options.absolute_tolerance = 0;
+  options.relative_tolerance = 1e-16;
+  RoundOffLine below(2.0);
+  const NewtonReport report = NewtonSolver(options).solve(below);
+  EXPECT_EQ(report.outcome, NewtonOutcome::RoundOffFloor) << report.message;
+  EXPECT_EQ(report.iterations, 2);
+  for (const std::string part : {"block 'x'", "stagnates at its round-off floor 1.776356839e-10",
+                                 "above the tolerance 1e-16 (relative_tolerance 1e-16 times 1)"})
+    EXPECT_NE(report.message.find(part), std::string::npos) << report.message;
+  EXPECT_EQ(to_string(report.outcome), "round_off_floor");
+
+  options.relative_tolerance = min_relative_tolerance();
+  RoundOffLine at_limit(2.0);
+  const NewtonReport converged = NewtonSolver(options).solve(at_limit);
+  ASSERT_TRUE(converged.converged()) << converged.message;
+  EXPECT_EQ(converged.iterations, 1);
+}
+
 }  // namespace
 }  // namespace pc
