@@ -22,6 +22,7 @@
 #include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "models/scene/time_estimate.hpp"
 
 namespace {
 
@@ -112,9 +113,17 @@ int main(int argc, char** argv) {
     const pc::Scene scene = pc::load_scene_file(scene_path, overrides);
     if (command == "check") {
       // Building each foundation's model runs every check the run would make before its first step.
-      for (const pc::SceneFoundation& f : scene.foundations) pc::FoundationRun(scene, f);
-      std::printf("scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s\n", scene.name.c_str(),
-                  scene.mesh_description.c_str(), scene.foundations.size(), scene.steps, scene.end_time);
+      int dofs = 0;
+      for (const pc::SceneFoundation& f : scene.foundations) {
+        pc::FoundationRun run(scene, f);
+        dofs = 0;
+        for (const std::string& u : run.model().unknowns()) dofs += run.model().space(u).num_dofs();
+      }
+      const pc::TimeEstimate predicted = pc::estimate_run_seconds(scene.spec.mesh->dim(), dofs, scene.steps);
+      std::printf("scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s; %d dofs, predicted %.3g s per "
+                  "foundation (%s)\n",
+                  scene.name.c_str(), scene.mesh_description.c_str(), scene.foundations.size(), scene.steps,
+                  scene.end_time, dofs, predicted.seconds, predicted.basis);
       return 0;
     }
     for (const std::string& name : options.only) {

@@ -24,6 +24,7 @@
 #include "models/scene/interrupts.hpp"
 #include "models/scene/mesh_summary.hpp"
 #include "models/scene/run_manifest.hpp"
+#include "models/scene/time_estimate.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/initial_potential.hpp"
 
@@ -59,10 +60,26 @@ std::vector<double> nodal_contact_pressure(const PiezoContactModel& built) {
   return pressure;
 }
 
+std::string describe_duration(double seconds) {
+  if (seconds < 90) return message(int(seconds + 0.5), " s");
+  if (seconds < 5400) return message(int(seconds / 60 + 0.5), " min");
+  return message(int(seconds / 3600 + 0.5), " h");
+}
+
 std::string eta(double elapsed, double done_fraction) {
   if (done_fraction <= 0) return "?";
-  const double left = elapsed * (1 - done_fraction) / done_fraction;
-  return left < 90 ? message(int(left + 0.5), " s") : message(int(left / 60 + 0.5), " min");
+  return describe_duration(elapsed * (1 - done_fraction) / done_fraction);
+}
+
+// Block residual norms as "1.00e-10 / 2.00e-17".
+std::string residual_text(const std::vector<double>& norms) {
+  std::string text;
+  for (double norm : norms) {
+    char part[32];
+    std::snprintf(part, sizeof part, "%s%.2e", text.empty() ? "" : " / ", norm);
+    text += part;
+  }
+  return text;
 }
 
 // No non-finite number is ever written as a result: a table with one is refused, naming the file, the
@@ -417,6 +434,24 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     return r.step == 0 ? message("the initial state (t = ", r.time, ")") : message("step ", r.step, " (t = ", r.time, ")");
   };
   const double first_time = options.resume ? options.resume->time : 0.0;  // of this process's part of the run
+  constexpr double progress_seconds = 10;
+  auto last_line = std::chrono::steady_clock::now();
+  auto since_last_line = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_line).count(); };
+  if (progress) {
+    const TimeEstimate predicted = estimate_run_seconds(dim, result.ndof, steps);
+    std::printf("  [%s] %d dofs, %d steps: predicted %s (%s)\n", foundation.name.c_str(), result.ndof, steps,
+                describe_duration(predicted.seconds).c_str(), predicted.basis);
+    // Inside a long step, a line per Newton iteration once progress_seconds have passed without one.
+    newton.set_iteration_callback([&, step = &done.steps](const NewtonReport& report) {
+      if (since_last_line() < progress_seconds) return;
+      last_line = std::chrono::steady_clock::now();
+      std::printf("  [%s] step %d: Newton iteration %d, |R| = %s\n", foundation.name.c_str(), *step + 1,
+                  int(report.history.size()) - 1, residual_text(report.history.back().residual_norms).c_str());
+      std::fflush(stdout);
+    });
+  } else {
+    newton.set_iteration_callback(nullptr);
+  }
   double done_time = options.resume ? options.resume->time : 0.0;
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
     add_phases(r.newton);
@@ -429,14 +464,11 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
     require_finite_rows(when(r) + ": history.csv", history_header, {row});
     if (history) history->row(row);
-    if (progress && (r.step % scene.output.progress_every == 0 || r.step == 1)) {
+    // A line every progress_every steps, and at least every progress_seconds: no long silence.
+    if (progress && (r.step % scene.output.progress_every == 0 || r.step == 1 || since_last_line() >= progress_seconds)) {
+      last_line = std::chrono::steady_clock::now();
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::string residuals;
-      for (double norm : r.newton.history.back().residual_norms) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%s%.2e", residuals.empty() ? "" : " / ", norm);
-        residuals += text;
-      }
+      const std::string residuals = residual_text(r.newton.history.back().residual_norms);
       std::printf("  [%s] step %d/%d  t = %.4g s  Newton %d (%s)  |R| = %s  in contact %g, sliding %g  left ~%s\n",
                   foundation.name.c_str(), r.step, steps, r.time, r.newton.iterations, to_string(r.newton.outcome).c_str(),
                   residuals.c_str(),

@@ -239,6 +239,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     norms = new_norms;
     const std::vector<double> steps = block_norms(blocks, alpha * dx);
     report.history.push_back({norms, steps, alpha, backtracks, restarted});
+    if (on_iteration_) on_iteration_(report);
 
     if (auto r = not_finite(norms, message("iteration ", iteration, ": the residual"))) return *r;
     const std::vector<double> sizes = block_norms(blocks, problem.free_values());

@@ -2,6 +2,7 @@
 // Monolithic Newton on all free values of a NonlinearProblem (for the paper's Model, (29)-(30): velocity and
 // potential together), with backtracking line search and convergence judged per block, since the
 // mechanical and electric residuals have different units.
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -102,6 +103,11 @@ class NewtonSolver {
   NewtonReport solve(NonlinearProblem& problem);
   // Symbolic analyses done so far (one per sparsity pattern).
   int analyses() const { return analyses_; }
+  // Called after every iteration with the report so far (its history's last entry is the iteration):
+  // progress for a long solve.
+  void set_iteration_callback(std::function<void(const NewtonReport&)> on_iteration) {
+    on_iteration_ = std::move(on_iteration);
+  }
 
  private:
   // One Newton step dx with J dx = -R: through the condensed system where it applies, else by a full
@@ -110,6 +116,7 @@ class NewtonSolver {
   Eigen::VectorXd full_step(NonlinearProblem& problem, NewtonReport& report);
 
   NewtonOptions options_;
+  std::function<void(const NewtonReport&)> on_iteration_;
   std::unique_ptr<LinearSolver> linear_;
   const CsrMatrix* analyzed_matrix_ = nullptr;
   long analyzed_nonzeros_ = -1;
