@@ -487,8 +487,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
   return scene;
 }
 
-Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
-  Json json = read_json_file(path);
+void apply_overrides(Json& json, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     require(eq != std::string::npos && eq > 0, "--set '", o, "': expected key=value, e.g. --set contact.c_nu=1e14");
@@ -497,6 +496,11 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
     const std::string key = o.substr(0, eq);
     json.set_path(key, parse_json_value_from_cli(o.substr(eq + 1), "--set " + key), Json::NewKeys::allow);
   }
+}
+
+Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  Json json = read_json_file(path);
+  apply_overrides(json, overrides);
   return load_scene(json, std::filesystem::path(path).parent_path().string());
 }
 
