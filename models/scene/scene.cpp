@@ -289,7 +289,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
         spec.E = e ? e->as_matrix() : preset->E;
         spec.beta = beta ? beta->as_matrix() : preset->beta;
       } else {
-        require((e == nullptr) == (beta == nullptr), "scene: material.piezo_E and material.permittivity_beta go "
+        require(e.has_value() == beta.has_value(), "scene: material.piezo_E and material.permittivity_beta go "
                 "together (both for a piezoelectric body, neither for a purely mechanical one)");
         if (!e) return;
         spec.E = e->as_matrix();
