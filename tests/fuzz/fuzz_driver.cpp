@@ -18,14 +18,16 @@
 // numbers and quoted text left out) was not seen before joins the pool that later inputs mutate.
 //
 // A finding (the target aborts, a sanitizer report, a signal, or an input that runs longer than
-// --timeout seconds) writes the input to fuzz-<target>-finding.input in the working directory and says
+// --timeout seconds of CPU time) writes the input to fuzz-<target>-finding.input in the working directory and says
 // how to reproduce it.
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -62,7 +64,9 @@ using ordered_json = nlohmann::ordered_json;
 // ---------------------------------------------------------------------------------------------------------
 // The input being run, kept where a signal handler can write it out.
 
-std::string current_input;
+// Never destroyed: the sanitizers' death callback may run after the static destructors (a leak report).
+std::string& current_input = *new std::string;
+volatile sig_atomic_t running = 0;  // an input is being run: a finding now is that input's
 char finding_path[4096] = "fuzz-finding.input";
 char reproduce_hint[512] = "";
 
@@ -90,14 +94,17 @@ void save_current_input() {
   write_message(reproduce_hint);
 }
 
-extern "C" void on_death() { save_current_input(); }
+extern "C" void on_death() {
+  if (running) save_current_input();
+}
 
 void on_signal(int signal) {
-  write_message(signal == SIGALRM ? "fuzz finding: an input ran longer than --timeout (a hang)\n"
-                                  : "fuzz finding: the target died of a signal\n");
+  const bool hang = signal == SIGALRM || signal == SIGPROF;
+  write_message(hang ? "fuzz finding: an input ran longer than --timeout (a hang)\n"
+                     : "fuzz finding: the target died of a signal\n");
   save_current_input();
   ::signal(signal, SIG_DFL);
-  if (signal == SIGALRM) ::_exit(1);
+  if (hang) ::_exit(1);
   ::raise(signal);
 }
 
@@ -114,19 +121,30 @@ void install_handlers() {
   action.sa_flags = SA_ONSTACK;
 #ifdef PIEZOCONTACT_FUZZ_ASAN
   __sanitizer_set_death_callback(on_death);
-  for (int s : {SIGABRT, SIGALRM}) ::sigaction(s, &action, nullptr);
+  for (int s : {SIGABRT, SIGALRM, SIGPROF}) ::sigaction(s, &action, nullptr);
 #else
-  for (int s : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGALRM}) ::sigaction(s, &action, nullptr);
+  for (int s : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGALRM, SIGPROF}) ::sigaction(s, &action, nullptr);
 #endif
 }
 
 unsigned timeout_seconds = 20;
 
+// The timeout counts CPU time (SIGPROF), so that a loaded machine does not make a slow input a hang;
+// five times as much wall time (SIGALRM) catches an input that waits.
+void set_timers(unsigned seconds) {
+  itimerval cpu{};
+  cpu.it_value.tv_sec = seconds;
+  ::setitimer(ITIMER_PROF, &cpu, nullptr);
+  ::alarm(5 * seconds);
+}
+
 int run_one(const std::string& input) {
   current_input = input;
-  ::alarm(timeout_seconds);
+  running = 1;
+  set_timers(timeout_seconds);
   LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(input.data()), input.size());
-  ::alarm(0);
+  set_timers(0);
+  running = 0;
   return 0;
 }
 
@@ -326,7 +344,19 @@ class Mutator {
     nodes_of(doc, nodes);
     ordered_json& node = *pick(nodes);
     const std::string placeholder = "\x01placeholder\x01";
-    switch (below(8)) {
+    switch (below(9)) {
+      case 8: {  // a number scaled, negated or zeroed: often still valid, so the model gets built
+        std::vector<ordered_json*> numbers;
+        for (ordered_json* n : nodes)
+          if (n->is_number()) numbers.push_back(n);
+        if (numbers.empty()) return doc.dump();
+        ordered_json& number = *pick(numbers);
+        static const std::vector<double> factors = {-1, 0, 0.5, 2, 10, 1e3, 1e-3, 1e100, 1e-100};
+        const double scaled = number.get<double>() * pick(factors);
+        if (number.is_number_integer() && std::abs(scaled) < 1e15) number = static_cast<long long>(scaled);
+        else number = scaled;
+        return doc.dump();
+      }
       case 0:
       case 1: {  // an extreme value, written as text: 1e400 and nan are no JSON numbers
         node = placeholder;
@@ -519,7 +549,9 @@ int main(int argc, char** argv) {
     std::snprintf(reproduce_hint, sizeof reproduce_hint,
                   "fuzz: reproduce it with: %s --seed %llu --iterations %llu <the same corpus>, or replay the file\n",
                   target.c_str(), static_cast<unsigned long long>(seed), static_cast<unsigned long long>(n + 1));
-    const std::string input = mutator.mutate(pool[mutator.below(pool.size())], pool, max_len);
+    // Half of the inputs start from a seed: the pool fills with inputs that are refused early.
+    const std::size_t from = mutator.chance(50) ? mutator.below(files.size()) : mutator.below(pool.size());
+    const std::string input = mutator.mutate(pool[from], pool, max_len);
     const double before = elapsed();
     run_one(input);
     slowest = std::max(slowest, elapsed() - before);
