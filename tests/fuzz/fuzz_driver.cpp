@@ -11,14 +11,14 @@
 // Mutations stack one to six of: bit flips, byte changes, inserts (random bytes or tokens of the
 // dictionary), deletions, duplications, splices with another input, truncations, numbers replaced by
 // extreme ones, line deletions, duplications and swaps; on input that parses as JSON, a value replaced by
-// a huge, negative, tiny, non-integral number, a NaN-like string, a value of another type, a deep nesting
-// or another value of the document, a member deleted or duplicated, an unknown key added; on lines of
-// key=value, paths of the corpus (and --paths-from) with extreme values, and broken paths (a..b, a[,
-// a[-1]). There is no coverage feedback: an input whose outcome (loaded, or the refusal's message with its
+// a huge, negative, tiny, non-integral or scaled number, a NaN-like string, a value of another type, a
+// deep nesting or another value of the document, a member deleted or duplicated, an unknown key added;
+// on lines of key=value, paths of the corpus (and --paths-from) with extreme values, and broken paths
+// (a..b, a[, a[-1]). There is no coverage feedback: an input whose outcome (loaded, or the refusal's message with its
 // numbers and quoted text left out) was not seen before joins the pool that later inputs mutate.
 //
-// A finding (the target aborts, a sanitizer report, a signal, or an input that runs longer than
-// --timeout seconds of CPU time) writes the input to fuzz-<target>-finding.input in the working directory and says
+// A finding (the target aborts, a sanitizer report, a signal, or an input that runs longer than --timeout
+// seconds of CPU time) writes the input to fuzz_<target>-finding.input in the working directory and says
 // how to reproduce it.
 #include <fcntl.h>
 #include <signal.h>
@@ -409,8 +409,9 @@ class Mutator {
         }
         return doc.dump();
       default: {  // a value of another type
-        static const std::vector<ordered_json> others = {nullptr, true, "text", ordered_json::array(), ordered_json::object(),
-                                                       -1, 0, 1e300, ordered_json::array({1, 2, 3})};
+        static const std::vector<ordered_json> others = {nullptr, true, "text", ordered_json::array(),
+                                                         ordered_json::object(), -1, 0, 1e300,
+                                                         ordered_json::array({1, 2, 3})};
         node = pick(others);
         return doc.dump();
       }
