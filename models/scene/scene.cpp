@@ -370,7 +370,10 @@ Scene load_scene(const Json& json, const std::string& directory) {
 
   problems.check_void([&] {
     const Json& f = json.at("foundation");
-    for (const auto& [name, value] : f.members()) {
+    for (const Json::Member& member : f.members()) {
+      // Not a structured binding: clang before 16 cannot capture one in a lambda.
+      const std::string& name = member.first;
+      const Json& value = member.second;
       if (const auto foundation = problems.check([&] { return read_foundation(value); })) {
         require(electric || foundation->name == "insulated", "scene: '", value.path(), "': a ", foundation->name,
                 " foundation needs a piezoelectric body (material.piezo_E)");
