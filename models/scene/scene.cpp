@@ -308,7 +308,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
         spec.E = e ? e->as_matrix() : preset->E;
         spec.beta = beta ? beta->as_matrix() : preset->beta;
       } else {
-        require((e == nullptr) == (beta == nullptr), "scene: material.piezo_E and material.permittivity_beta go "
+        require(e.has_value() == beta.has_value(), "scene: material.piezo_E and material.permittivity_beta go "
                 "together (both for a piezoelectric body, neither for a purely mechanical one)");
         if (!e) return;
         spec.E = e->as_matrix();
@@ -389,7 +389,10 @@ Scene load_scene(const Json& json, const std::string& directory) {
 
   problems.check_void([&] {
     const Json& f = json.at("foundation");
-    for (const auto& [name, value] : f.members()) {
+    for (const Json::Member& member : f.members()) {
+      // Not a structured binding: clang before 16 cannot capture one in a lambda.
+      const std::string& name = member.first;
+      const Json& value = member.second;
       if (const auto foundation = problems.check([&] { return read_foundation(value); })) {
         require(electric || foundation->name == "insulated", "scene: '", value.path(), "': a ", foundation->name,
                 " foundation needs a piezoelectric body (material.piezo_E)");
@@ -535,8 +538,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
   return scene;
 }
 
-Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
-  Json json = read_json_file(path);
+void apply_overrides(Json& json, const std::vector<std::string>& overrides) {
   for (const std::string& o : overrides) {
     const auto eq = o.find('=');
     require(eq != std::string::npos && eq > 0, "--set '", o, "': expected key=value, e.g. --set contact.c_nu=1e14");
@@ -545,6 +547,11 @@ Scene load_scene_file(const std::string& path, const std::vector<std::string>& o
     const std::string key = o.substr(0, eq);
     json.set_path(key, parse_json_value_from_cli(o.substr(eq + 1), "--set " + key), Json::NewKeys::allow);
   }
+}
+
+Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  Json json = read_json_file(path);
+  apply_overrides(json, overrides);
   Scene scene;
   try {
     scene = load_scene(json, std::filesystem::path(path).parent_path().string());

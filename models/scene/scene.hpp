@@ -67,7 +67,10 @@ struct Scene {
 // Validates and builds (meshes included); throws one pc::Error listing every problem found.
 // `directory` resolves relative paths in the scene (a gmsh file).
 Scene load_scene(const Json& json, const std::string& directory);
-// Reads the file, applies overrides "a.b=value" (the value parsed as JSON when it parses), loads.
+// Applies command-line overrides "a.b=value" (--set) in order: the value parsed as JSON when it parses
+// (parse_json_value_from_cli), the path by Json::set_path, which may add a last key the object lacks.
+void apply_overrides(Json& json, const std::vector<std::string>& overrides);
+// Reads the file, applies the overrides (apply_overrides), loads.
 Scene load_scene_file(const std::string& path, const std::vector<std::string>& overrides = {});
 // The scene's foundation of that name; throws naming the known ones.
 const SceneFoundation& find_foundation(const Scene& scene, const std::string& name);
