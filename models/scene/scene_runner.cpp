@@ -643,10 +643,11 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
                      r.steps, r.message.empty() ? "(no message)" : r.message.c_str());
       }
       if (options.progress)
-        std::printf("  %s: %s in %.2f s, %d Newton iterations (max %d per step); max|ux| = %.4g m, max|uy| = %.4g m, "
+        std::printf("  %s: %s in %.2f s, %d Newton iterations (max %d per step); max|ux| = %.4g m, max|uy| = %.4g m%s, "
                     "phi in [%.4g, %.4g] V%s\n",
                     f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.newton_iterations_total,
-                    r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy, r.phi_min, r.phi_max,
+                    r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy,
+                    r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min, r.phi_max,
                     r.message.empty() ? "" : ("; " + r.message).c_str());
     }
 
