@@ -219,17 +219,26 @@ void set_quiet_options(const GmshOptions& options) {
   gmsh::option::setNumber("General.AbortOnError", 0);
 }
 
-// In the child: runs the script, meshes it and writes the mesh, exactly, to `msh`.
-void mesh_script(const std::string& geo, const std::string& msh, const GmshOptions& options) {
+bool is_script(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char ch) { return std::tolower(ch); });
+  return extension == ".geo";
+}
+
+// In the child: reads the file (runs and meshes a script) and writes the mesh, exactly, to `msh`.
+void read_in_child(const std::string& input, const std::string& msh, const GmshOptions& options) {
   set_quiet_options(options);
-  gmsh::open(geo);
+  gmsh::open(input);
   throw_logged_error();
-  // Scale whatever factor the script sets for itself.
-  double factor = 1;
-  gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
-  gmsh::option::setNumber("Mesh.MeshSizeFactor", factor * options.mesh_size_factor);
-  gmsh::model::mesh::generate(gmsh::model::getDimension());
-  throw_logged_error();
+  if (is_script(input)) {
+    // Scale whatever factor the script sets for itself.
+    double factor = 1;
+    gmsh::option::getNumber("Mesh.MeshSizeFactor", factor);
+    gmsh::option::setNumber("Mesh.MeshSizeFactor", factor * options.mesh_size_factor);
+    gmsh::model::mesh::generate(gmsh::model::getDimension());
+    throw_logged_error();
+  }
   gmsh::option::setNumber("Mesh.Binary", 1);   // doubles bit for bit
   gmsh::option::setNumber("Mesh.SaveAll", 1);  // every element, as the script made them
   gmsh::write(msh);
@@ -262,9 +271,10 @@ std::string with_line_hint(const std::string& geo, const std::string& error) {
 
 std::string describe_limit(double bytes) { return message(bytes / 1073741824.0, " GiB"); }
 
-// Runs mesh_script in a child process within the budgets; returns the path of the .msh file it wrote,
+// Runs read_in_child in a child process within the budgets; returns the path of the .msh file it wrote,
 // or throws saying how the child ended.
-std::string mesh_script_in_child(const std::string& geo, const GmshOptions& options) {
+std::string read_in_child_process(const std::string& geo, const GmshOptions& options) {
+  const char* doing = is_script(geo) ? "meshing" : "reading";
   const std::string msh = (std::filesystem::temp_directory_path() /
                            ("piezocontact_gmsh_" + std::to_string(::getpid()) + "_" +
                             std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()) + ".msh"))
@@ -276,6 +286,9 @@ std::string mesh_script_in_child(const std::string& geo, const GmshOptions& opti
   require(child >= 0, "gmsh: cannot start a process to mesh '", geo, "': ", std::strerror(errno));
   if (child == 0) {
     ::close(channel[0]);
+    // A crash inside gmsh ends the child by its signal, whatever handlers the parent installed (a
+    // sanitizer's), so that the parent can say so.
+    for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
     if (options.verbosity <= 0) {  // what the script prints (Printf, warnings) is not the caller's output
       const int null = ::open("/dev/null", O_WRONLY);
       ::dup2(null, 1);
@@ -289,7 +302,7 @@ std::string mesh_script_in_child(const std::string& geo, const GmshOptions& opti
     int status = 0;
     try {
       const GmshSession session;
-      mesh_script(geo, msh, options);
+      read_in_child(geo, msh, options);
     } catch (const std::string& e) {
       error = e;
       status = 2;
@@ -332,29 +345,36 @@ std::string mesh_script_in_child(const std::string& geo, const GmshOptions& opti
     std::error_code ignored;
     std::filesystem::remove(msh, ignored);
   };
+  const std::string too_fine =
+      is_script(geo) ? message(": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?")
+                     : std::string(": is the file a mesh too large for this machine?");
   if (over_time) {
     remove_msh();
-    fail("meshing took more than ", options.max_seconds, " s (mesh.max_seconds) and was stopped: is the mesh size ",
-         "(mesh.size_factor = ", options.mesh_size_factor, ") far too small?");
+    fail(doing, " took more than ", options.max_seconds, " s (mesh.max_seconds) and was stopped", too_fine);
   }
   const bool exited = WIFEXITED(status);
   const int code = exited ? WEXITSTATUS(status) : 0;
   if (exited && code == 0 && std::filesystem::exists(msh)) return msh;
   remove_msh();
+  if (exited && code == 3 && !is_script(geo))
+    throw std::string("reading it ran out of memory (a malformed count in the file, or a mesh too large for this "
+                      "machine)");
   if (exited && code == 3)
-    fail("meshing ran out of memory", options.max_memory_bytes > 0 ? " (the limit is " + describe_limit(options.max_memory_bytes) + ")" : "",
-         ": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?");
+    fail(doing, " ran out of memory",
+         options.max_memory_bytes > 0 ? " (the limit is " + describe_limit(options.max_memory_bytes) + ")" : "", too_fine);
   if (exited && code == 2) throw with_line_hint(geo, error);
-  if (exited)
+  if (exited && is_script(geo))
     fail("the script ended gmsh (exit status ", code, ") before its mesh was written: does it call 'Exit'?");
-  fail("gmsh died of signal ", WTERMSIG(status), " (", strsignal(WTERMSIG(status)), ") while meshing",
-       options.max_memory_bytes > 0 ? "; its memory was limited to " + describe_limit(options.max_memory_bytes) +
-                                          " (solver.max_memory_gib, or what the machine has available)"
-                                    : "",
-       ": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?");
+  if (exited) fail("gmsh ended (exit status ", code, ") while reading the file (is it a malformed .msh?)");
+  // A signal: libgmsh's own reader crashes on some malformed .msh files.
+  fail("gmsh died of signal ", WTERMSIG(status), " (", strsignal(WTERMSIG(status)), ") while ", doing,
+       is_script(geo) ? "" : " the file (is it a malformed .msh?)",
+       options.max_memory_bytes > 0 && (WTERMSIG(status) == SIGABRT || WTERMSIG(status) == SIGKILL)
+           ? "; its memory was limited to " + describe_limit(options.max_memory_bytes) +
+                 " (solver.max_memory_gib, or what the machine has available)"
+           : "");
 }
 
-// Reads a .msh file into a Mesh (in a gmsh session of the caller's).
 Mesh read_msh(const std::string& msh, const GmshOptions& options) {
   set_quiet_options(options);
   gmsh::open(msh);
@@ -437,17 +457,11 @@ Mesh import_gmsh(const std::string& path, const GmshOptions& options) {
   require(options.mesh_size_factor > 0, "gmsh: mesh_size_factor must be positive, got ",
           options.mesh_size_factor);
   const std::lock_guard lock(gmsh_mutex);
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char ch) { return std::tolower(ch); });
   // gmsh 4.8 throws its error messages as std::string.
   try {
-    if (extension != ".geo") {
-      const GmshSession session;
-      return read_msh(path, options);
-    }
-    // The child meshes before this process opens a gmsh session of its own.
-    const std::string msh = mesh_script_in_child(path, options);
+    // The child reads (or meshes) before this process opens a gmsh session of its own, and hands back a
+    // binary .msh that gmsh itself wrote: this process never parses a file it was given.
+    const std::string msh = read_in_child_process(path, options);
     struct RemoveTemporary {
       const std::string& path;
       ~RemoveTemporary() {

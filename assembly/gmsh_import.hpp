@@ -17,10 +17,10 @@ struct GmshOptions {
   double max_memory_bytes = 0;
 };
 
-// A .geo script is a program: gmsh runs it, and meshes its geometry, in a child process of its own, so
-// that whatever the script does (an `Exit;`, a crash inside gmsh, a mesh past a budget, gmsh's terminal
-// output) cannot end, hang or clutter the caller; the child hands back the mesh as a binary .msh file,
-// which is read here. A .msh file is data and is read in this process.
+// gmsh reads the file, and runs and meshes a .geo script, in a child process of its own, so that
+// whatever the input does (an `Exit;` in a script, a malformed .msh that crashes libgmsh's reader, a mesh
+// past a budget, gmsh's terminal output) cannot end, hang or clutter the caller; the child hands back
+// the mesh as a binary .msh file that gmsh itself wrote, which this process reads.
 //
 // Throws when the file does not exist, gmsh cannot read it, it holds no cells, mixes cell shapes, or
 // has second-order geometry, or when meshing a script ends early or exceeds a budget. Each call initializes and finalizes gmsh itself: do not call it while the
