@@ -46,7 +46,8 @@ class Reader {
     require(size <= (bytes_.size() - at_) / sizeof(double), "checkpoint '", path_, "' is damaged (a vector of ", size,
             " values overruns the file)");
     Eigen::VectorXd v(static_cast<Eigen::Index>(size));
-    std::memcpy(v.data(), take(size * sizeof(double)), size * sizeof(double));
+    const char* values = take(size * sizeof(double));
+    if (size > 0) std::memcpy(v.data(), values, size * sizeof(double));  // an empty vector's data() is null
     return v;
   }
   size_t at() const { return at_; }
@@ -94,7 +95,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
   for (const auto& [name, values] : checkpoint.vectors) {
     put_text(bytes, name);
     put(bytes, std::uint64_t(values.size()));
-    bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
+    if (values.size() > 0) bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
   }
   put(bytes, std::uint64_t(checkpoint.texts.size()));
   for (const auto& [name, text] : checkpoint.texts) {
