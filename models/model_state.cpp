@@ -55,4 +55,28 @@ void restore_model_state(Model& model, TimeScheme& scheme, const Checkpoint& che
   scheme.restore_history_state(history);
 }
 
+void save_stepper_state(const StepperState& s, Checkpoint& c) {
+  c.numbers["stepper:time"] = s.time;
+  c.numbers["stepper:step_size"] = s.step_size;
+  c.numbers["stepper:steps"] = s.steps;
+  c.numbers["stepper:successes"] = s.successes;
+  c.numbers["stepper:attempts"] = s.attempts;
+  c.numbers["stepper:cutbacks"] = s.cutbacks;
+  c.numbers["stepper:newton_iterations_total"] = s.newton_iterations_total;
+  c.numbers["stepper:newton_iterations_max_per_step"] = s.newton_iterations_max_per_step;
+}
+
+StepperState restore_stepper_state(const Checkpoint& c) {
+  StepperState s;
+  s.time = c.number("stepper:time");
+  s.step_size = c.number("stepper:step_size");
+  s.steps = int(c.number("stepper:steps"));
+  s.successes = int(c.number("stepper:successes"));
+  s.attempts = int(c.number("stepper:attempts"));
+  s.cutbacks = int(c.number("stepper:cutbacks"));
+  s.newton_iterations_total = int(c.number("stepper:newton_iterations_total"));
+  s.newton_iterations_max_per_step = int(c.number("stepper:newton_iterations_max_per_step"));
+  return s;
+}
+
 }  // namespace pc

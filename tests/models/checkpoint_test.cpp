@@ -94,6 +94,7 @@ TEST_P(ResumedRun, EndsWithExactlyTheUninterruptedState) {
   StepperCallbacks callbacks;
   callbacks.on_checkpoint = [&](const Model& m, const StepperState& state) {
     save_model_state(m, *first.scheme, checkpoint);
+    save_stepper_state(state, checkpoint);
     stopped_at = state;
   };
   NewtonSolver first_newton;
@@ -106,7 +107,8 @@ TEST_P(ResumedRun, EndsWithExactlyTheUninterruptedState) {
   PiezoContactModel second = paper_model(GetParam());
   restore_model_state(*second.model, *second.scheme, checkpoint);
   StepperOptions resuming = twelve_steps();
-  resuming.resume = stopped_at;
+  resuming.resume = restore_stepper_state(checkpoint);
+  EXPECT_EQ(resuming.resume->step_size, stopped_at->step_size);
   NewtonSolver second_newton;
   const RunSummary rest = Stepper(resuming).run(*second.model, *second.scheme, second_newton);
   ASSERT_TRUE(rest.completed) << rest.message;
