@@ -273,17 +273,17 @@ std::string describe_limit(double bytes) { return message(bytes / 1073741824.0, 
 
 // Runs read_in_child in a child process within the budgets; returns the path of the .msh file it wrote,
 // or throws saying how the child ended.
-std::string read_in_child_process(const std::string& geo, const GmshOptions& options) {
-  const char* doing = is_script(geo) ? "meshing" : "reading";
+std::string read_in_child_process(const std::string& input, const GmshOptions& options) {
+  const char* doing = is_script(input) ? "meshing" : "reading";
   const std::string msh = (std::filesystem::temp_directory_path() /
                            ("piezocontact_gmsh_" + std::to_string(::getpid()) + "_" +
                             std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()) + ".msh"))
                               .string();
   int channel[2];
-  require(::pipe(channel) == 0, "gmsh: cannot create a pipe to mesh '", geo, "': ", std::strerror(errno));
+  require(::pipe(channel) == 0, "gmsh: cannot create a pipe to read '", input, "': ", std::strerror(errno));
   std::fflush(nullptr);
   const pid_t child = ::fork();
-  require(child >= 0, "gmsh: cannot start a process to mesh '", geo, "': ", std::strerror(errno));
+  require(child >= 0, "gmsh: cannot start a process to read '", input, "': ", std::strerror(errno));
   if (child == 0) {
     ::close(channel[0]);
     // A crash inside gmsh ends the child by its signal, whatever handlers the parent installed (a
@@ -302,7 +302,7 @@ std::string read_in_child_process(const std::string& geo, const GmshOptions& opt
     int status = 0;
     try {
       const GmshSession session;
-      read_in_child(geo, msh, options);
+      read_in_child(input, msh, options);
     } catch (const std::string& e) {
       error = e;
       status = 2;
@@ -316,6 +316,8 @@ std::string read_in_child_process(const std::string& geo, const GmshOptions& opt
       error = "unknown error";
       status = 2;
     }
+    // Within the pipe's buffer, so that the write never waits for a parent that waits for the exit.
+    if (error.size() > 4000) error.resize(4000);
     for (size_t done = 0; done < error.size();) {
       const ssize_t n = ::write(channel[1], error.data() + done, error.size() - done);
       if (n <= 0) break;
@@ -327,7 +329,7 @@ std::string read_in_child_process(const std::string& geo, const GmshOptions& opt
   const auto start = std::chrono::steady_clock::now();
   int status = 0;
   bool over_time = false;
-  while (::waitpid(child, &status, WNOHANG) == 0) {
+  for (pid_t ended; (ended = ::waitpid(child, &status, WNOHANG)) == 0 || (ended < 0 && errno == EINTR);) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.max_seconds > 0 && elapsed > options.max_seconds) {
       ::kill(child, SIGKILL);
@@ -346,7 +348,7 @@ std::string read_in_child_process(const std::string& geo, const GmshOptions& opt
     std::filesystem::remove(msh, ignored);
   };
   const std::string too_fine =
-      is_script(geo) ? message(": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?")
+      is_script(input) ? message(": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?")
                      : std::string(": is the file a mesh too large for this machine?");
   if (over_time) {
     remove_msh();
@@ -356,19 +358,19 @@ std::string read_in_child_process(const std::string& geo, const GmshOptions& opt
   const int code = exited ? WEXITSTATUS(status) : 0;
   if (exited && code == 0 && std::filesystem::exists(msh)) return msh;
   remove_msh();
-  if (exited && code == 3 && !is_script(geo))
+  if (exited && code == 3 && !is_script(input))
     throw std::string("reading it ran out of memory (a malformed count in the file, or a mesh too large for this "
                       "machine)");
   if (exited && code == 3)
     fail(doing, " ran out of memory",
          options.max_memory_bytes > 0 ? " (the limit is " + describe_limit(options.max_memory_bytes) + ")" : "", too_fine);
-  if (exited && code == 2) throw with_line_hint(geo, error);
-  if (exited && is_script(geo))
+  if (exited && code == 2) throw with_line_hint(input, error);
+  if (exited && is_script(input))
     fail("the script ended gmsh (exit status ", code, ") before its mesh was written: does it call 'Exit'?");
   if (exited) fail("gmsh ended (exit status ", code, ") while reading the file (is it a malformed .msh?)");
   // A signal: libgmsh's own reader crashes on some malformed .msh files.
   fail("gmsh died of signal ", WTERMSIG(status), " (", strsignal(WTERMSIG(status)), ") while ", doing,
-       is_script(geo) ? "" : " the file (is it a malformed .msh?)",
+       is_script(input) ? "" : " the file (is it a malformed .msh?)",
        options.max_memory_bytes > 0 && (WTERMSIG(status) == SIGABRT || WTERMSIG(status) == SIGKILL)
            ? "; its memory was limited to " + describe_limit(options.max_memory_bytes) +
                  " (solver.max_memory_gib, or what the machine has available)"

@@ -1,6 +1,7 @@
 #include "models/output/result_series.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -45,6 +46,15 @@ std::string ResultSeries::write(int step, double time, const VtuWriter& writer) 
   return path;
 }
 
+bool ResultSeries::is_step_file(const std::string& basename, const std::string& file_name) {
+  const std::string prefix = basename + "_", suffix = ".vtu";
+  if (file_name.size() <= prefix.size() + suffix.size() || !file_name.starts_with(prefix) ||
+      !file_name.ends_with(suffix))
+    return false;
+  const std::string digits = file_name.substr(prefix.size(), file_name.size() - prefix.size() - suffix.size());
+  return std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
 std::vector<std::pair<int, double>> ResultSeries::written() const {
   std::vector<std::pair<int, double>> out;
   for (const auto& [step, entry] : steps_) out.emplace_back(step, entry.first);
@@ -59,10 +69,9 @@ void ResultSeries::continue_from(const std::vector<std::pair<int, double>>& step
             "': cannot continue: the file of step ", step, " (", file, ") is missing");
     steps_[step] = {time, file};
   }
-  const std::string prefix = basename_ + "_";
   for (const auto& entry : std::filesystem::directory_iterator(directory_)) {
     const std::string name = entry.path().filename().string();
-    if (!name.starts_with(prefix) || !name.ends_with(".vtu")) continue;
+    if (!is_step_file(basename_, name)) continue;
     const bool kept = std::any_of(steps_.begin(), steps_.end(), [&](const auto& s) { return s.second.second == name; });
     if (!kept) std::filesystem::remove(entry.path());
   }

@@ -22,6 +22,8 @@ class ResultSeries {
   std::string write(int step, double time, const VtuWriter& writer);
 
   std::string pvd_path() const;
+  // Whether a file name is one of a series' VTU files: <basename>_<digits>.vtu.
+  static bool is_step_file(const std::string& basename, const std::string& file_name);
 
   // The steps written so far, with their times (what a checkpoint keeps of the series).
   std::vector<std::pair<int, double>> written() const;

@@ -14,6 +14,7 @@
 #include "assembly/content_hash.hpp"
 #include "assembly/error.hpp"
 #include "assembly/version.hpp"
+#include "models/output/result_series.hpp"
 
 namespace pc {
 namespace {
@@ -44,8 +45,7 @@ bool is_output_name(const std::string& name, const std::string& scene_name, bool
   for (const char* table : {"summary.json", "history.csv", "gamma_c.csv", "grid.csv", "final_nodes.csv",
                             "final_cells.csv", "checkpoint.bin"})
     if (name == table) return true;
-  return name.ends_with(".tmp") || name == scene_name + ".pvd" ||
-         (name.starts_with(scene_name + "_") && name.ends_with(".vtu"));
+  return name.ends_with(".tmp") || name == scene_name + ".pvd" || ResultSeries::is_step_file(scene_name, name);
 }
 
 // The run's folders: the top and one per foundation; each regular file in them with its path relative

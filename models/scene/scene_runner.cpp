@@ -398,14 +398,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     result.condensation_seconds += newton.condensation_seconds;
     result.factorizations += newton.factorizations;
   };
-  // What the run has done, for its summary if a callback stops it (a non-finite result).
-  RunSummary done;
-  if (options.resume) {
-    done.steps = options.resume->steps;
-    done.newton_iterations_total = options.resume->newton_iterations_total;
-    done.newton_iterations_max_per_step = options.resume->newton_iterations_max_per_step;
-    done.cutbacks = options.resume->cutbacks;
-  }
+  // Where the run stands after its last accepted step, for its summary if a callback stops it (a
+  // non-finite result, memory running out): the stepper's own state, as each step record carries it.
+  StepperState done = options.resume.value_or(StepperState{});
   auto when = [](const StepRecord& r) {
     return r.step == 0 ? message("the initial state (t = ", r.time, ")") : message("step ", r.step, " (t = ", r.time, ")");
   };
@@ -418,24 +413,22 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     std::printf("  [%s] %d dofs, %d steps: predicted %s (%s)\n", foundation.name.c_str(), result.ndof, steps,
                 describe_duration(predicted.seconds).c_str(), predicted.basis);
     // Inside a long step, a line per Newton iteration once progress_seconds have passed without one.
-    newton.set_iteration_callback([&, step = &done.steps](const NewtonReport& report) {
+    newton.set_iteration_callback([&](const NewtonReport& report) {
       if (since_last_line() < progress_seconds) return;
       last_line = std::chrono::steady_clock::now();
-      std::printf("  [%s] step %d: Newton iteration %d, |R| = %s\n", foundation.name.c_str(), *step + 1,
+      std::printf("  [%s] step %d: Newton iteration %d, |R| = %s\n", foundation.name.c_str(), done.steps + 1,
                   int(report.history.size()) - 1, residual_text(report.history.back().residual_norms).c_str());
       std::fflush(stdout);
     });
-  } else {
-    newton.set_iteration_callback(nullptr);
   }
-  double done_time = options.resume ? options.resume->time : 0.0;
+  // The callback reads this run's locals: the solver, which outlives the run, must not keep it.
+  struct ForgetCallback {
+    NewtonSolver& newton;
+    ~ForgetCallback() { newton.set_iteration_callback(nullptr); }
+  } forget_callback{newton};
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
     add_phases(r.newton);
-    done.steps = r.step;
-    done_time = r.time;
-    done.newton_iterations_total += r.newton.iterations;
-    done.cutbacks += r.cutbacks;
-    done.newton_iterations_max_per_step = std::max(done.newton_iterations_max_per_step, r.newton.iterations);
+    done = r.state;
     require_finite_state(model, when(r));
     const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
     require_finite_rows(when(r) + ": history.csv", history_header, {row});
@@ -465,14 +458,13 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
     series->write(r.step, r.time, writer);
   };
-  const double run_start_wall = earlier_wall_seconds;
   if (!dir.empty())
     callbacks.on_checkpoint = [&](const Model& model, const StepperState& state) {
       Checkpoint checkpoint;
       checkpoint.texts["foundation"] = foundation.name;
       save_model_state(model, *built.scheme, checkpoint);
       save_stepper_state(state, checkpoint);
-      const double wall = run_start_wall + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double wall = earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       save_totals(result, wall, checkpoint);
       save_series(*series, checkpoint);
       write_checkpoint(checkpoint_path, checkpoint);
@@ -498,7 +490,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     // Out of memory inside a step (a factorisation's fill, most likely): the step is named, and what has
     // been written stays; the state is mid-step, so no final tables are written from it.
     stopped_in_callback = true;
-    result.message = message("out of memory in step ", done.steps + 1, " (from t = ", done_time, "): ", e.what(),
+    result.message = message("out of memory in step ", done.steps + 1, " (from t = ", done.time, "): ", e.what(),
                              "; coarsen the mesh, or free memory");
   }
   if (stopped_in_callback) {

@@ -153,6 +153,22 @@ TEST_F(OutputTest, CsvLogWrongValueCountThrowsNamingFileAndCounts) {
 
 // A resumed run continues its history after the checkpoint's rows: later rows (computed after the
 // checkpoint by the run that was killed) are cut off, and a file of other columns is refused.
+// A series continued from nothing (a fresh run into a used folder) removes its own earlier step files
+// only: another series' files, whose name starts alike, and other files stay.
+TEST_F(OutputTest, AContinuedSeriesRemovesOnlyItsOwnStaleStepFiles) {
+  for (const char* name : {"s_000003.vtu", "s_000010.vtu", "s_fine_000000.vtu", "s_notes.vtu", "s.pvd.bak"})
+    std::ofstream(directory_ / name) << "x";
+  ResultSeries series(directory_.string(), "s");
+  series.continue_from({});
+  EXPECT_FALSE(fs::exists(directory_ / "s_000003.vtu"));
+  EXPECT_FALSE(fs::exists(directory_ / "s_000010.vtu"));
+  EXPECT_TRUE(fs::exists(directory_ / "s_fine_000000.vtu"));
+  EXPECT_TRUE(fs::exists(directory_ / "s_notes.vtu"));
+  EXPECT_TRUE(fs::exists(directory_ / "s.pvd.bak"));
+  EXPECT_TRUE(series.written().empty());
+  expect_error_containing([&] { series.continue_from({{4, 0.5}}); }, {"the file of step 4", "is missing"});
+}
+
 TEST_F(OutputTest, CsvLogContinuesAfterTheRowsKept) {
   const std::string path = (directory_ / "log.csv").string();
   {
