@@ -14,6 +14,12 @@
 
 namespace pc {
 
+// What a symbolic analysis predicts of the factors (a cost model's input): 0 where the back end does not tell.
+struct FactorEstimate {
+  double entries = 0;  // in L and U together
+  double flops = 0;    // of the numeric factorisation
+};
+
 class LinearSolver {
  public:
   virtual ~LinearSolver() = default;
@@ -27,6 +33,8 @@ class LinearSolver {
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
   // True when the last analyze() succeeded on exactly this pattern, so that factorize() may follow.
   virtual bool is_analyzed_for(const CsrMatrix& matrix) const = 0;
+  // After analyze(): the predicted size and work of the factorisation.
+  virtual FactorEstimate factor_estimate() const { return {}; }
 
   // analyze (when the pattern is new) + factorize + solve, for one-off systems.
   Eigen::VectorXd solve_once(const CsrMatrix& matrix, const Eigen::VectorXd& b);

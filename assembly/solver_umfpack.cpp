@@ -41,9 +41,12 @@ class UmfpackSolver final : public SolverBase {
     umfpack_di_free_symbolic(&symbolic_);
     const int n = static_cast<int>(matrix().rows());
     // No values: UMFPACK would only use them for statistics, and analyze() is about the pattern.
+    double info[UMFPACK_INFO];
     check(umfpack_di_symbolic(n, n, matrix().outerIndexPtr(), matrix().innerIndexPtr(), nullptr, &symbolic_,
-                              control_, nullptr),
+                              control_, info),
           "symbolic analysis");
+    // Upper bounds (UMFPACK's pivoting may do better), which is what a cost model wants.
+    estimate_ = {info[UMFPACK_LNZ_ESTIMATE] + info[UMFPACK_UNZ_ESTIMATE], info[UMFPACK_FLOPS_ESTIMATE]};
   }
 
   // The Symbolic object is kept: every factorization of the pattern reuses its ordering.
@@ -75,7 +78,10 @@ class UmfpackSolver final : public SolverBase {
             describe(status), ")");
   }
 
+  FactorEstimate factor_estimate() const override { return estimate_; }
+
   double control_[UMFPACK_CONTROL];
+  FactorEstimate estimate_;
   void* symbolic_ = nullptr;
   void* numeric_ = nullptr;
 };

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int nx = 30; nx <= max_nx; nx *= 2) {
     double plain_wall = 0, one_solve = 0;
-    const std::vector<std::string> paths = {"plain", "columns", "schur"};
+    const std::vector<std::string> paths = {"plain", "columns", "schur", "krylov"};
     for (size_t p = 0; p < paths.size(); ++p) {
       const std::string& path = paths[p];
       const bool condensed = path != "plain";

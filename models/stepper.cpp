@@ -113,6 +113,8 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       }
       ++record.cutbacks;
       ++state.cutbacks;
+      record.cut_back_cost += report;
+      record.cut_back_assembly_seconds += report.assembly_seconds;
       state.successes = 0;
       dt = attempt * o.cutback_factor;
       if (dt < o.min_step) {
@@ -140,6 +142,8 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
     if (callbacks.on_checkpoint && o.checkpoint_every > 0 && record.step % o.checkpoint_every == 0 && !last)
       callbacks.on_checkpoint(model, state);
     record.cutbacks = 0;
+    record.cut_back_cost = {};
+    record.cut_back_assembly_seconds = 0;
   }
   summary.completed = t >= o.end - tiny;
   if (!summary.completed && callbacks.on_checkpoint) callbacks.on_checkpoint(model, state);

@@ -61,6 +61,10 @@ struct StepRecord {
   double dt = 0;
   int cutbacks = 0;  // failed attempts before this step was accepted
   NewtonReport newton;
+  // The work of those failed attempts (their Newton solves' assembly and linear solves), so that a run's
+  // time per phase counts every solve it did, not only the accepted ones.
+  LinearSolveCost cut_back_cost;
+  double cut_back_assembly_seconds = 0;
   StepperState state;  // after this step: what a checkpoint saves to continue from here
 };
 

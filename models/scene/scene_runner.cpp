@@ -234,6 +234,7 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   s.set("newton_iterations_total", Json(double(r.newton_iterations_total)));
   s.set("newton_iterations_max_per_step", Json(double(r.newton_iterations_max_per_step)));
   s.set("wall_s_total", Json(r.wall_seconds));
+  if (!r.linear_strategy.empty()) s.set("linear_strategy", Json(r.linear_strategy));
   for (const auto& [name, value] : result_numbers(r)) s.set(name, finite_or_null(value));
   s.set("n_contact_nodes", Json(double(r.n_contact_nodes)));
   s.set("n_slip_nodes", Json(double(r.n_slip_nodes)));
@@ -428,6 +429,14 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   } forget_callback{newton};
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
     add_phases(r.newton);
+    NewtonReport cut_back;  // the failed attempts before this step
+    static_cast<LinearSolveCost&>(cut_back) = r.cut_back_cost;
+    cut_back.assembly_seconds = r.cut_back_assembly_seconds;
+    add_phases(cut_back);
+    if (result.linear_strategy != newton.strategy_explanation()) {
+      result.linear_strategy = newton.strategy_explanation();
+      if (progress) std::printf("  [%s] %s\n", foundation.name.c_str(), result.linear_strategy.c_str());
+    }
     done = r.state;
     require_finite_state(model, when(r));
     const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);

@@ -56,6 +56,7 @@ struct FoundationRunResult {
   // sparse factorisations done.
   double assembly_seconds = 0, factorize_seconds = 0, solve_seconds = 0, condensation_seconds = 0;
   int factorizations = 0;
+  std::string linear_strategy;  // solver.condensation = "auto": what the cost model chose and why
   std::string message;
 };
 

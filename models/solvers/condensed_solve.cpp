@@ -26,25 +26,17 @@ double largest_entry_in_rows(const CsrMatrix& A, const std::vector<int>& rows) {
 
 }  // namespace
 
-Registry<Condensation>& condensation_registry() {
-  static Registry<Condensation> registry("condensation", "solver.condensation");
-  return registry;
-}
-
-Condensation condensation_from_string(const std::string& name) {
-  return condensation_registry().at(name, "condensation").create;
-}
-
-std::string to_string(Condensation method) { return method == Condensation::Schur ? "schur" : "columns"; }
-
-CondensedSolve::CondensedSolve(Condensation method, std::string linear_solver, double max_fraction, int max_dofs)
-    : method_(method), linear_solver_name_(std::move(linear_solver)), max_fraction_(max_fraction), max_dofs_(max_dofs) {}
+CondensedSolve::CondensedSolve(LinearStrategy method, std::string linear_solver, double max_fraction, int max_dofs)
+    : method_(method == LinearStrategy::Columns ? method : LinearStrategy::Schur), linear_solver_name_(std::move(linear_solver)), max_fraction_(max_fraction), max_dofs_(max_dofs) {}
 
 bool CondensedSolve::applies(NonlinearProblem& problem) const {
+  return applies_in_proportion(problem) && double(problem.nonlinear_dofs().size()) <= double(max_dofs_);
+}
+
+bool CondensedSolve::applies_in_proportion(NonlinearProblem& problem) const {
   if (max_fraction_ <= 0 || uncondensable_ == &problem) return false;
-  const double m = double(problem.nonlinear_dofs().size());
   // m = 0 (a linear problem) also gains: the factorisation of A is kept from solve to solve.
-  return m <= max_fraction_ * double(problem.residual().size()) && m <= double(max_dofs_);
+  return double(problem.nonlinear_dofs().size()) <= max_fraction_ * double(problem.residual().size());
 }
 
 CondensedStep CondensedSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b) {
@@ -69,7 +61,7 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
   for (size_t i = 0; i < nonlinear_.size(); ++i) position_[nonlinear_[i]] = int(i);
 
   auto t = Clock::now();
-  if (method_ == Condensation::Schur && !nonlinear_.empty()) {
+  if (method_ == LinearStrategy::Schur && !nonlinear_.empty()) {
     if (!schur_) schur_ = std::make_unique<SchurComplement>();
     if (!schur_->is_analyzed_for(A, nonlinear_)) {
       schur_->analyze(A, nonlinear_);
@@ -125,7 +117,7 @@ Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::Ve
   for (int i = 0; i < m; ++i)
     if (is_active[i]) active.push_back(i);
   cost.condensation_seconds += seconds_since(t);
-  return method_ == Condensation::Schur && m > 0 ? schur_step(D, active, b, cost) : columns_step(D, active, b, cost);
+  return method_ == LinearStrategy::Schur && m > 0 ? schur_step(D, active, b, cost) : columns_step(D, active, b, cost);
 }
 
 // (S_c + D) x_c = r with r = reduce(b), by Woodbury on S_c^-1 over the active dofs I:
@@ -194,10 +186,3 @@ Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std
 }
 
 }  // namespace pc
-
-PC_REGISTER(pc::condensation_registry(),
-            {"schur", "MUMPS Schur complement of the interior: one solve's worth of work per Newton iteration", {},
-             pc::Condensation::Schur})
-PC_REGISTER(pc::condensation_registry(),
-            {"columns", "Woodbury columns by solves with solver.linear: two solves per iteration", {},
-             pc::Condensation::Columns})

@@ -25,18 +25,12 @@
 #include <Eigen/LU>
 
 #include "assembly/linear_solver.hpp"
-#include "assembly/registry.hpp"
 #include "assembly/schur_complement.hpp"
 #include "models/solvers/linear_solve_cost.hpp"
+#include "models/solvers/linear_strategy.hpp"
 #include "models/solvers/nonlinear_problem.hpp"
 
 namespace pc {
-
-enum class Condensation { Schur, Columns };
-// The methods a scene can name (solver.condensation): "schur" | "columns".
-Registry<Condensation>& condensation_registry();
-Condensation condensation_from_string(const std::string& name);  // throws listing the registered names
-std::string to_string(Condensation method);
 
 struct CondensedStep {
   std::optional<Eigen::VectorXd> dx;  // empty: A (for Schur, its interior) could not be factorised
@@ -48,12 +42,15 @@ class CondensedSolve {
   // Applies to problems whose nonlinear dofs are at most max_fraction of all (0: to none) and at most
   // max_dofs in number: the dense work on them grows as their cube, so past a few thousand a full
   // factorisation per iteration is the cheaper path.
-  CondensedSolve(Condensation method, std::string linear_solver, double max_fraction, int max_dofs);
+  // method: LinearStrategy::Schur or Columns.
+  CondensedSolve(LinearStrategy method, std::string linear_solver, double max_fraction, int max_dofs);
   // Whether the problem's nonlinear dofs are few enough and its linear part has not failed to condense.
   bool applies(NonlinearProblem& problem) const;
+  // The same without the cap on their number (the cost model of "auto" weighs that).
+  bool applies_in_proportion(NonlinearProblem& problem) const;
   // The step dx with J dx = b for the problem's current (assembled) Jacobian.
   CondensedStep step(NonlinearProblem& problem, const Eigen::VectorXd& b);
-  Condensation method() const { return method_; }
+  LinearStrategy method() const { return method_; }
 
  private:
   // Refactorises A when the problem, its linear part or its nonlinear dofs changed.
@@ -64,7 +61,7 @@ class CondensedSolve {
   Eigen::VectorXd columns_step(const Eigen::MatrixXd& D, const std::vector<int>& active, const Eigen::VectorXd& b,
                                LinearSolveCost& cost);
 
-  Condensation method_;
+  LinearStrategy method_;
   std::string linear_solver_name_;
   double max_fraction_;
   int max_dofs_;

@@ -51,8 +51,9 @@ std::string to_string(NewtonOutcome outcome) {
 
 NewtonSolver::NewtonSolver(NewtonOptions options)
     : options_(std::move(options)),
-      condensed_(condensation_from_string(options_.condensation), options_.linear_solver,
-                 options_.condensed_max_fraction, options_.condensed_max_dofs) {
+      named_strategy_(linear_strategy_from_string(options_.condensation)),
+      condensed_(named_strategy_, options_.linear_solver, options_.condensed_max_fraction, options_.condensed_max_dofs),
+      krylov_(options_.linear_solver) {
   require(options_.max_iterations >= 1, "Newton: max_iterations must be >= 1, got ", options_.max_iterations);
   require(options_.relative_tolerance >= 0 && options_.absolute_tolerance >= 0 && options_.increment_tolerance >= 0,
           "Newton: tolerances must be >= 0");
@@ -62,8 +63,46 @@ NewtonSolver::NewtonSolver(NewtonOptions options)
   linear_ = make_linear_solver(options_.linear_solver);
 }
 
+LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
+  if (options_.condensed_max_fraction <= 0) return LinearStrategy::Full;
+  if (named_strategy_ == LinearStrategy::Krylov) return LinearStrategy::Krylov;
+  if (named_strategy_ != LinearStrategy::Auto) return condensed_.applies(problem) ? condensed_.method() : LinearStrategy::Full;
+  // auto: where most dofs are nonlinear, J changes everywhere and only a factorisation per iteration applies.
+  if (!condensed_.applies_in_proportion(problem)) return LinearStrategy::Full;
+  const std::vector<int>& nonlinear = problem.nonlinear_dofs();
+  if (chosen_for_ == &problem && chosen_nonlinear_ == nonlinear) return chosen_;
+  chosen_for_ = &problem;
+  chosen_nonlinear_ = nonlinear;
+  if (nonlinear.empty()) {
+    // A linear problem: A's factorisation, kept from solve to solve.
+    chosen_ = condensed_.method();
+    return chosen_;
+  }
+  StrategyCostInputs inputs;
+  inputs.dofs = double(problem.residual().size());
+  inputs.nonlinear_dofs = double(nonlinear.size());
+  inputs.jacobian_nonzeros = double(problem.jacobian().nonZeros());
+  inputs.factors = krylov_.analyze(problem.jacobian());
+  inputs.memory_budget_bytes = options_.dense_memory_budget_bytes;
+  const StrategyCosts costs = predict_strategy_costs(inputs);
+  // The dense methods also keep to solver.condensed_max_dofs.
+  chosen_ = costs.choice == LinearStrategy::Schur && condensed_.applies(problem) ? LinearStrategy::Schur
+                                                                                 : LinearStrategy::Krylov;
+  explanation_ = costs.explanation;
+  return chosen_;
+}
+
 Eigen::VectorXd NewtonSolver::step(NonlinearProblem& problem, NewtonReport& report) {
-  if (condensed_.applies(problem)) {
+  const LinearStrategy strategy = strategy_for(problem);
+  report.strategy = strategy;
+  if (strategy == LinearStrategy::Krylov) {
+    KrylovStep krylov = krylov_.step(problem, -problem.residual());
+    report += krylov.cost;
+    report.condensed = true;
+    report.krylov_iterations += krylov.iterations;
+    return std::move(krylov.dx);
+  }
+  if (strategy != LinearStrategy::Full) {
     CondensedStep condensed = condensed_.step(problem, -problem.residual());
     report += condensed.cost;
     report.condensed = condensed.dx.has_value();
@@ -71,6 +110,7 @@ Eigen::VectorXd NewtonSolver::step(NonlinearProblem& problem, NewtonReport& repo
     // The linear part (or, for the Schur method, its interior) is singular: the condensed solve no longer
     // applies to this problem, which is solved in full; a genuinely singular J then fails there with the
     // solver's message.
+    report.strategy = LinearStrategy::Full;
   }
   return full_step(problem, report);
 }

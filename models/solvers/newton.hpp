@@ -10,6 +10,9 @@
 
 #include "assembly/linear_solver.hpp"
 #include "models/solvers/condensed_solve.hpp"
+#include "models/solvers/krylov_solve.hpp"
+#include "models/solvers/linear_strategy.hpp"
+#include "models/solvers/strategy_cost_model.hpp"
 #include "models/solvers/linear_solve_cost.hpp"
 #include "models/solvers/nonlinear_problem.hpp"
 
@@ -64,9 +67,15 @@ struct NewtonOptions {
   // ... and at most this many: the dense systems on them cost m^3 (1600: every mesh of the fast-path
   // study up to 480 x 160 is condensed; a contact face of 2000 nodes is not, and is solved in full).
   int condensed_max_dofs = 1600;
-  // "schur" (MUMPS's Schur complement of the interior: one solve's worth of work per iteration) or
-  // "columns" (any linear_solver: two solves per iteration, plus one per newly active dof and factorisation).
-  std::string condensation = "schur";
+  // The linear strategy (models/solvers/linear_strategy.hpp): "auto" (by the cost model), "schur" (MUMPS's
+  // Schur complement of the interior: one solve's worth of work per iteration), "columns" (any
+  // linear_solver: two solves per iteration, plus one per newly active dof and factorisation) or "krylov"
+  // (GMRES preconditioned by a kept factorisation of an earlier J: a few solves per iteration, nothing
+  // dense, so it applies whatever the number of contact dofs).
+  std::string condensation = "auto";
+  // "auto" keeps the dense matrices of schur within this many bytes (0: no limit); scenes set a quarter of
+  // the memory available.
+  double dense_memory_budget_bytes = 0;
 };
 
 enum class NewtonOutcome { Converged, MaxIterations, Diverged, SingularTangent, RoundOffFloor };
@@ -88,7 +97,9 @@ struct NewtonReport : LinearSolveCost {
   std::vector<std::string> blocks;       // the problem's blocks, in order
   std::vector<NewtonIteration> history;  // history[0] is the initial residual
   double assembly_seconds = 0, total_seconds = 0;
-  bool condensed = false;  // whether the condensed solve was used
+  bool condensed = false;  // whether a condensed or Krylov step was used
+  LinearStrategy strategy = LinearStrategy::Full;  // of the last iteration
+  int krylov_iterations = 0;                        // GMRES iterations, over the solve
   std::map<std::string, double> diagnostics;  // the problem's, at the end
   std::string message;
   bool converged() const { return outcome == NewtonOutcome::Converged; }
@@ -103,6 +114,8 @@ class NewtonSolver {
   NewtonReport solve(NonlinearProblem& problem);
   // Symbolic analyses done so far (one per sparsity pattern).
   int analyses() const { return analyses_; }
+  // What "auto" chose and why (the cost model's line), once it has chosen; empty otherwise.
+  const std::string& strategy_explanation() const { return explanation_; }
   // Called after every iteration with the report so far (its history's last entry is the iteration):
   // progress for a long solve.
   void set_iteration_callback(std::function<void(const NewtonReport&)> on_iteration) {
@@ -121,7 +134,18 @@ class NewtonSolver {
   const CsrMatrix* analyzed_matrix_ = nullptr;
   long analyzed_nonzeros_ = -1;
   int analyses_ = 0;
+  // The strategy for this problem: the named one, or the cost model's choice (kept while the problem and
+  // its nonlinear dofs stay the same).
+  LinearStrategy strategy_for(NonlinearProblem& problem);
+
+  LinearStrategy named_strategy_;
+  // auto's choice, for the problem and nonlinear dofs it was made for.
+  const NonlinearProblem* chosen_for_ = nullptr;
+  std::vector<int> chosen_nonlinear_;
+  LinearStrategy chosen_ = LinearStrategy::Full;
+  std::string explanation_;
   CondensedSolve condensed_;
+  KrylovSolve krylov_;
 };
 
 }  // namespace pc

@@ -177,12 +177,54 @@ TEST(NonlinearProblem, TooManyNonlinearDofsAreSolvedInFull) {
   for (const int cap : {8, 7}) {
     SpringChain problem(n, true, held);
     NewtonOptions options;
+    options.condensation = "schur";
     options.condensed_max_dofs = cap;
     const NewtonReport report = NewtonSolver(options).solve(problem);
     ASSERT_TRUE(report.converged()) << report.message;
     EXPECT_EQ(report.condensed, cap >= int(held.size())) << cap;
     EXPECT_LT((problem.free_values() - full).norm(), 1e-12 * full.norm()) << cap;
   }
+}
+
+// GMRES preconditioned by a kept factorisation of an earlier J: the Newton iterates are those of exact
+// steps (to the GMRES tolerance), with fewer factorisations than iterations: J changes only on the cubic
+// springs' dofs from one iteration to the next.
+TEST(NonlinearProblem, KrylovStepsReachTheFullSolutionWithFewerFactorisations) {
+  const int n = 200;
+  const std::vector<int> held = {20, 60, 100, 140, 180, 199};
+  const Eigen::VectorXd full = solve_in_full(n, true, held);
+  SpringChain problem(n, true, held);
+  NewtonOptions options;
+  options.condensation = "krylov";
+  NewtonSolver newton(options);
+  const NewtonReport report = newton.solve(problem);
+  ASSERT_TRUE(report.converged()) << report.message;
+  EXPECT_TRUE(report.condensed);
+  EXPECT_EQ(report.strategy, LinearStrategy::Krylov);
+  EXPECT_GT(report.iterations, 2);
+  EXPECT_LT(report.factorizations, report.iterations) << "the factorisation of J_ref is kept between iterations";
+  EXPECT_GT(report.krylov_iterations, 0);
+  // J_ref^-1 J is the identity plus a rank of at most 6 (the held dofs): GMRES needs at most 7 per step.
+  EXPECT_LE(report.krylov_iterations, 7 * report.iterations);
+  EXPECT_LT((problem.free_values() - full).norm(), 1e-10 * full.norm());
+}
+
+// auto weighs the strategies by the cost model: six nonlinear dofs of 200 are condensed by Schur, and the
+// choice is explained; a problem whose dofs are all nonlinear is solved in full.
+TEST(NonlinearProblem, AutoChoosesByTheCostModelAndSaysWhy) {
+  const int n = 200;
+  SpringChain chain(n, true, {20, 60, 100, 140, 180, 199});
+  NewtonSolver newton;  // condensation = "auto"
+  const NewtonReport report = newton.solve(chain);
+  ASSERT_TRUE(report.converged()) << report.message;
+  EXPECT_EQ(report.strategy, LinearStrategy::Schur);
+  EXPECT_NE(newton.strategy_explanation().find("6 contact dofs of 200"), std::string::npos)
+      << newton.strategy_explanation();
+  EXPECT_NE(newton.strategy_explanation().find(": schur"), std::string::npos) << newton.strategy_explanation();
+  CircleHyperbola everywhere;
+  const NewtonReport all = NewtonSolver().solve(everywhere);
+  ASSERT_TRUE(all.converged());
+  EXPECT_EQ(all.strategy, LinearStrategy::Full);
 }
 
 TEST(NonlinearProblem, ASingularLinearPartIsSchurCondensedOrSolvedInFullFromThenOn) {

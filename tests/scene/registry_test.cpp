@@ -49,7 +49,7 @@ TEST(Registry, EveryNameAScenesGivesIsRegistered) {
                            "bricks (bricks[].type): boundary_dashpot",
                            "time schemes (time.scheme): backward_euler bdf2 theta",
                            "linear solvers (solver.linear): cholmod eigen-lu mumps umfpack",
-                           "condensations (solver.condensation): columns schur"})
+                           "condensations (solver.condensation): auto columns krylov schur"})
     EXPECT_CONTAINS(list, line);
   const std::string theta = catalog_describe(registry_catalog(), "theta");
   EXPECT_CONTAINS(theta, "time.scheme = \"theta\" (time scheme)");
@@ -66,7 +66,7 @@ TEST(Registry, CheckRefusesWhatRunWouldRefuseWithTheKeyAndTheValue) {
        "power_damped)"},
       {{"contact.law_tangential=banana"}, "unknown friction law 'banana' (known: coulomb, none, tresca, viscous)"},
       {{"foundation.conductive.type=superconductive"}, "unknown foundation law 'superconductive'"},
-      {{"solver.condensation=diagonal"}, "'solver.condensation': unknown condensation 'diagonal' (known: columns, schur)"},
+      {{"solver.condensation=diagonal"}, "'solver.condensation': unknown condensation 'diagonal' (known: auto, columns, krylov, schur)"},
       {{"solver.linear=superlu"}, "'solver.linear': unknown linear solver 'superlu'"},
       {{"contact.c_nu=-1"}, "'contact.c_nu': c_nu = -1 must be finite and >= 0"},
       {{"foundation.conductive.k_e=-2"}, "'foundation.conductive.k_e': k_e = -2 must be finite and >= 0"},

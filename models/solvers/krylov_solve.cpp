@@ -1,0 +1,93 @@
+#include "models/solvers/krylov_solve.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace pc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// GMRES gives up (and J is factorised at once) after this many iterations at least, and after as many as a
+// factorisation costs at most, however cheap a solve is against it.
+constexpr int kMinIterations = 4, kMaxIterations = 200;
+// After n failures of GMRES in a row, 2^n - 1 direct steps (at most 2^kMaxBackoffExponent - 1) before the next try.
+constexpr int kMaxBackoffExponent = 5;
+
+}  // namespace
+
+KrylovSolve::KrylovSolve(std::string linear_solver, double relative_tolerance)
+    : linear_solver_name_(std::move(linear_solver)), relative_tolerance_(relative_tolerance) {}
+
+FactorEstimate KrylovSolve::analyze(const CsrMatrix& J) {
+  if (!factors_) factors_ = make_linear_solver(linear_solver_name_);
+  if (!factors_->is_analyzed_for(J)) factors_->analyze(J);
+  return factors_->factor_estimate();
+}
+
+Eigen::VectorXd KrylovSolve::direct_step(const CsrMatrix& J, const Eigen::VectorXd& b, LinearSolveCost& cost) {
+  if (!factors_) factors_ = make_linear_solver(linear_solver_name_);
+  auto t = Clock::now();
+  if (!factors_->is_analyzed_for(J)) {
+    factors_->analyze(J);
+    cost.analyze_seconds += seconds_since(t);
+    t = Clock::now();
+  }
+  renew_ = true;  // until the factorisation below succeeds
+  factors_->factorize(J);
+  factorize_seconds_ = seconds_since(t);
+  cost.factorize_seconds += factorize_seconds_;
+  ++cost.factorizations;
+  t = Clock::now();
+  Eigen::VectorXd dx = factors_->solve(b);
+  cost.solve_seconds += seconds_since(t);
+  renew_ = false;
+  return dx;
+}
+
+KrylovStep KrylovSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b) {
+  KrylovStep result;
+  const CsrMatrix& J = problem.jacobian();
+  const std::uint64_t version = problem.linear_jacobian_version();
+  if (renew_ || direct_steps_left_ > 0 || problem_ != &problem || version_ != version ||
+      !factors_->is_analyzed_for(J)) {
+    if (direct_steps_left_ > 0) --direct_steps_left_;
+    problem_ = &problem;
+    version_ = version;
+    result.dx = direct_step(J, b, result.cost);
+    return result;
+  }
+  // A factorisation's worth of iterations, within [kMinIterations, kMaxIterations].
+  const double affordable = iteration_seconds_ > 0 ? factorize_seconds_ / iteration_seconds_ : kMaxIterations;
+  GmresOptions options;
+  options.relative_tolerance = relative_tolerance_;
+  options.max_iterations = std::clamp(int(std::ceil(affordable)), kMinIterations, kMaxIterations);
+  options.restart = options.max_iterations;
+  const auto t = Clock::now();
+  GmresResult gmres_result = gmres([&](const Eigen::VectorXd& x) -> Eigen::VectorXd { return J * x; },
+                                   [&](const Eigen::VectorXd& r) { return factors_->solve(r); }, b, options);
+  const double seconds = seconds_since(t);
+  result.cost.solve_seconds += seconds;
+  result.iterations = gmres_result.iterations;
+  total_iterations_ += gmres_result.iterations;
+  iteration_seconds_ = seconds / std::max(gmres_result.iterations, 1);
+  if (!gmres_result.converged) {
+    // J moved too far from J_ref: the iterations so far are lost, at most a factorisation's worth. While
+    // the contact state keeps moving that fast, GMRES would fail again: the next steps are direct, twice
+    // as many after each failure in a row, so that the path costs little more than a factorisation per
+    // iteration where that is the right answer.
+    failures_in_a_row_ = std::min(failures_in_a_row_ + 1, kMaxBackoffExponent);
+    direct_steps_left_ = (1 << failures_in_a_row_) - 1;
+    result.dx = direct_step(J, b, result.cost);
+    return result;
+  }
+  failures_in_a_row_ = 0;
+  // The next step renews J_ref when this one's iterations cost more than a factorisation would have.
+  renew_ = seconds > factorize_seconds_;
+  result.dx = std::move(gmres_result.x);
+  return result;
+}
+
+}  // namespace pc
