@@ -1,6 +1,7 @@
 #include "models/model.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
 
@@ -529,7 +530,11 @@ void Model::assemble(bool tangent) {
         continue;
       }
       outputs.assign(bt.test_unknowns.size(), nullptr);
-      if (!state.tangent_valid) bt.assembly->assemble(values, time_, outputs, true);
+      if (!state.tangent_valid) {
+        const auto start = std::chrono::steady_clock::now();
+        bt.assembly->assemble(values, time_, outputs, true);
+        jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
     }
     if (!brick.linear()) {
       for (const std::string& u : touched) measure_and_add(u);
@@ -590,6 +595,7 @@ void Model::assemble(bool tangent) {
   }
 
   if (tangent) {
+    const auto start = std::chrono::steady_clock::now();
     std::vector<double> factors;
     for (const auto& [name, f] : fields_)
       if (f->kind == FieldKind::Affine) factors.push_back(f->factor);
@@ -609,6 +615,7 @@ void Model::assemble(bool tangent) {
           s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
       }
     }
+    jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   residual_ = Eigen::VectorXd::Zero(s.layout.size());

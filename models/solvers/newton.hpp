@@ -88,6 +88,9 @@ struct NewtonReport : LinearSolveCost {
   std::vector<std::string> blocks;       // the problem's blocks, in order
   std::vector<NewtonIteration> history;  // history[0] is the initial residual
   double assembly_seconds = 0, total_seconds = 0;
+  // The part of assembly_seconds the problem spent on the Jacobian (NonlinearProblem::jacobian_assembly_seconds);
+  // the rest is the residual's.
+  double jacobian_seconds = 0;
   bool condensed = false;  // whether the condensed solve was used
   std::map<std::string, double> diagnostics;  // the problem's, at the end
   std::string message;

@@ -123,6 +123,30 @@ TEST(Model, CachedAndForcedAssemblyAreIdentical) {
   EXPECT_LT((dense(bulk.model->jacobian()) - cached_jacobian).norm(), 1e-14 * cached_jacobian.norm());
 }
 
+// The Jacobian's share of assembly: the linear bricks' tangents (whichever assembly needs them first, since
+// their residual is a mat-vec with them) and the Jacobian's sum; a later residual alone adds nothing. Newton
+// reports it within its assembly time.
+TEST(Model, CountsTheJacobiansShareOfAssemblyOnlyWhenItIsAssembled) {
+  Bulk bulk;
+  bulk.scheme.begin_step(*bulk.model, 0.01);
+  EXPECT_EQ(bulk.model->jacobian_assembly_seconds(), 0.0);
+  bulk.model->assemble(false);
+  const double tangents = bulk.model->jacobian_assembly_seconds();
+  EXPECT_GT(tangents, 0.0) << "the linear bricks' tangents were assembled";
+  bulk.model->assemble(false);
+  EXPECT_EQ(bulk.model->jacobian_assembly_seconds(), tangents) << "a residual alone is no Jacobian work";
+  bulk.model->assemble(true);
+  const double first = bulk.model->jacobian_assembly_seconds();
+  EXPECT_GT(first, tangents) << "the sum of the Jacobian";
+  bulk.model->assemble(false);
+  EXPECT_EQ(bulk.model->jacobian_assembly_seconds(), first);
+  NewtonSolver newton;
+  const NewtonReport report = newton.solve(*bulk.model);
+  EXPECT_GT(report.jacobian_seconds, 0.0);
+  EXPECT_LE(report.jacobian_seconds, report.assembly_seconds);
+  EXPECT_DOUBLE_EQ(report.jacobian_seconds, bulk.model->jacobian_assembly_seconds() - first);
+}
+
 TEST(Model, RejectsBadInputNamingWhatIsWrong) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Triangle));
   auto expect_error = [](auto&& action, const std::string& fragment) {
