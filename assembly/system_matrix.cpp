@@ -56,13 +56,21 @@ void SystemMatrix::finalize() {
     const auto rows = layout_.global_indices(b.row_field);
     const auto cols = layout_.global_indices(b.col_field);
     b.slots.assign(b.nnz, -1);
+    bool any_free = false;
     for (int r = 0; r < b.rows; ++r) {
       if (rows[r] < 0) continue;
       for (int k = b.outer[r]; k < b.outer[r + 1]; ++k)
-        if (cols[b.inner[k]] >= 0) b.slots[k] = find_slot(matrix_, rows[r], cols[b.inner[k]]);
+        if (cols[b.inner[k]] >= 0) {
+          b.slots[k] = find_slot(matrix_, rows[r], cols[b.inner[k]]);
+          any_free = true;
+        }
     }
-    b.outer = {};
-    b.inner = {};
+    // The declared pattern is no longer needed, and a block with no free entry (its rows or columns all
+    // constrained, e.g. a frozen field's) needs no slots: swapping with empty vectors frees the memory,
+    // which `= {}` (a clear that keeps the capacity) would not.
+    std::vector<int>().swap(b.outer);
+    std::vector<int>().swap(b.inner);
+    if (!any_free) std::vector<int>().swap(b.slots);
   }
   finalized_ = true;
 }
@@ -81,6 +89,7 @@ void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
   const Block& b = blocks_[handle];
   require(block.nonZeros() == b.nnz && block.rows() == b.rows, "SystemMatrix: block ", handle,
           " changed its pattern since it was declared");
+  if (b.slots.empty()) return;  // no free entry
   const double* values = block.valuePtr();
   double* target = matrix_.valuePtr();
   for (long k = 0; k < b.nnz; ++k)

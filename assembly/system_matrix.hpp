@@ -32,7 +32,8 @@ class SystemMatrix {
   struct Block {
     int row_field, col_field, rows, cols;
     long nnz;
-    std::vector<int> slots;  // global slot of each block entry, -1 where a row or column is constrained
+    // Global slot of each block entry, -1 where a row or column is constrained; empty when no entry is free.
+    std::vector<int> slots;
     std::vector<int> outer, inner;  // the declared pattern, kept until finalize()
   };
   const DofLayout& layout_;
