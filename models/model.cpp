@@ -73,6 +73,7 @@ std::vector<double> in_layout_order(const DofLayout& l, const std::map<std::stri
 
 Model::Model(std::shared_ptr<const Mesh> mesh) : mesh_(std::move(mesh)) {
   require(mesh_ != nullptr, "Model: no mesh");
+  assembly_cache_ = std::make_unique<TermAssemblyCache>(*mesh_);
 }
 
 Model::~Model() = default;
@@ -282,7 +283,7 @@ void Model::bind_brick(int index) {
     }
     for (const std::string& name : b.field_names)
       if (!coupled.count(name) && field_kind(name) == FieldKind::Data) b.uncoupled_data.push_back(name);
-    b.assembly = std::make_unique<TermAssembly>(bt.term, bt.region, spaces);
+    b.assembly = std::make_unique<TermAssembly>(bt.term, bt.region, spaces, *assembly_cache_);
     // A rebuilt term must keep its pattern: the system matrix was declared with it.
     if (bound.size() < state.terms.size()) {
       const BoundTerm& old = state.terms[bound.size()];

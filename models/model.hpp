@@ -156,6 +156,8 @@ class Model : public DataView, public NonlinearProblem {
   void refresh_linear_sum(System& s);
 
   std::shared_ptr<const Mesh> mesh_;
+  // The geometry and block patterns the bricks' terms share (one copy for all body terms).
+  std::unique_ptr<TermAssemblyCache> assembly_cache_;
   std::map<std::string, std::unique_ptr<Field>> fields_;
   std::vector<std::string> unknown_names_;
   std::map<std::string, std::pair<Eigen::MatrixXd, std::uint64_t>> constants_;
