@@ -77,7 +77,7 @@ void SystemMatrix::finalize() {
 
 void SystemMatrix::set_zero() { std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0); }
 
-void SystemMatrix::set_values(const std::vector<double>& values) {
+void SystemMatrix::set_values(std::span<const double> values) {
   require(finalized_ && long(values.size()) == long(matrix_.nonZeros()), "SystemMatrix: set_values() with ",
           values.size(), " values for ", matrix_.nonZeros(), " non-zeros");
   std::copy(values.begin(), values.end(), matrix_.valuePtr());

@@ -3,6 +3,7 @@
 // numbering, e.g. TermAssembly::block) are declared once; finalize() builds the global pattern as their
 // union and maps every block entry to its global slot, so that summing blocks with scheme factors,
 // J = sum_b factor_b * K_b, costs one pass over the blocks' non-zeros with no search or sorting.
+#include <span>
 #include <vector>
 
 #include "assembly/dof_layout.hpp"
@@ -25,7 +26,7 @@ class SystemMatrix {
   const CsrMatrix& matrix() const { return matrix_; }
   // The values in pattern order, e.g. to keep a partial sum and restore it without re-adding blocks.
   std::vector<double> values() const { return {matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros()}; }
-  void set_values(const std::vector<double>& values);
+  void set_values(std::span<const double> values);
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
 
  private:

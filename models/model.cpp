@@ -45,13 +45,13 @@ struct Model::System {
   DofLayout layout;
   std::unique_ptr<SystemMatrix> matrix;
   std::vector<std::vector<std::vector<int>>> handles;  // [brick][term][coupling]
-  std::vector<double> linear_values;
+  // The sum of the linear blocks with the scheme's factors, with the Jacobian's pattern: each Jacobian
+  // starts from its values, and linear_jacobian() is this matrix (one copy serves both).
+  CsrMatrix linear_matrix;
   std::uint64_t linear_stamp = ~std::uint64_t(0);  // linear_version_ the sum was made with
   std::vector<double> linear_factors;              // affine factors it was made with
   std::uint64_t linear_sum = 0;                    // Model::linear_sums_ when it was last made
   std::vector<int> nonlinear_dofs;                 // free dofs that nonlinear blocks touch, sorted
-  CsrMatrix linear_matrix;                         // the linear sum as a matrix, made on request
-  std::uint64_t linear_matrix_sum = 0;
 };
 
 namespace {
@@ -465,7 +465,11 @@ void Model::refresh_linear_sum(System& s) {
         s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
     }
   }
-  s.linear_values = s.matrix->values();
+  const CsrMatrix& sum = s.matrix->matrix();
+  if (s.linear_matrix.rows() != sum.rows() || s.linear_matrix.nonZeros() != sum.nonZeros())
+    s.linear_matrix = sum;  // the first sum: the pattern with the values
+  else
+    std::copy_n(sum.valuePtr(), sum.nonZeros(), s.linear_matrix.valuePtr());
 }
 
 void Model::assemble(bool tangent) {
@@ -606,7 +610,7 @@ void Model::assemble(bool tangent) {
       s.linear_factors = factors;
       s.linear_sum = ++linear_sums_;
     }
-    s.matrix->set_values(s.linear_values);
+    s.matrix->set_values({s.linear_matrix.valuePtr(), size_t(s.linear_matrix.nonZeros())});
     for (int b = 0; b < int(bricks_.size()); ++b) {
       if (bricks_[b]->linear()) continue;
       const BrickState& state = *brick_states_[b];
@@ -662,11 +666,6 @@ void Model::add_to_free_values(const Eigen::VectorXd& step) {
 const CsrMatrix& Model::linear_jacobian() {
   System& s = system();
   require(s.linear_sum > 0, "Model: linear_jacobian() before assemble(true)");
-  if (s.linear_matrix_sum != s.linear_sum) {
-    s.linear_matrix = s.matrix->matrix();
-    std::copy(s.linear_values.begin(), s.linear_values.end(), s.linear_matrix.valuePtr());
-    s.linear_matrix_sum = s.linear_sum;
-  }
   return s.linear_matrix;
 }
 
