@@ -1,5 +1,7 @@
 #include "assembly/block_pattern.hpp"
 
+#include <algorithm>
+
 namespace pc {
 
 void element_dofs(const FESpace& space, const RegionGeometry& geometry, int element, std::vector<int>& dofs) {
@@ -19,6 +21,15 @@ void element_dofs(const FESpace& space, const RegionGeometry& geometry, int elem
   }
 }
 
+CsrMatrix BlockPattern::zero_matrix() const {
+  CsrMatrix m(rows, cols);
+  m.resizeNonZeros(Eigen::Index(inner.size()));
+  std::copy(outer.begin(), outer.end(), m.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), m.innerIndexPtr());
+  std::fill_n(m.valuePtr(), inner.size(), 0.0);
+  return m;
+}
+
 BlockPattern make_block_pattern(const RegionGeometry& geometry, const FESpace& test, const FESpace& trial) {
   BlockPattern p;
   std::vector<int> rows, cols;
@@ -29,17 +40,22 @@ BlockPattern make_block_pattern(const RegionGeometry& geometry, const FESpace& t
     for (int r : rows)
       for (int c : cols) entries.emplace_back(r, c, 0.0);
   }
-  p.matrix.resize(test.num_dofs(), trial.num_dofs());
-  p.matrix.setFromTriplets(entries.begin(), entries.end());
-  p.matrix.makeCompressed();
-  p.slots.reserve(entries.size());
+  CsrMatrix matrix(test.num_dofs(), trial.num_dofs());
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  matrix.makeCompressed();
+  const size_t count = entries.size();  // one slot per element entry
   std::vector<Eigen::Triplet<double, int>>().swap(entries);  // before the slots grow to their size
+  p.slots.reserve(count);
   for (int e = 0; e < geometry.num_elements(); ++e) {
     element_dofs(test, geometry, e, rows);
     element_dofs(trial, geometry, e, cols);
     for (int r : rows)
-      for (int c : cols) p.slots.push_back(find_slot(p.matrix, r, c));
+      for (int c : cols) p.slots.push_back(find_slot(matrix, r, c));
   }
+  p.rows = int(matrix.rows());
+  p.cols = int(matrix.cols());
+  p.outer.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + matrix.rows() + 1);
+  p.inner.assign(matrix.innerIndexPtr(), matrix.innerIndexPtr() + matrix.nonZeros());
   return p;
 }
 

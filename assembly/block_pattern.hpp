@@ -13,8 +13,11 @@
 namespace pc {
 
 struct BlockPattern {
-  CsrMatrix matrix;        // the pattern, compressed, with zero values
-  std::vector<int> slots;  // [element * rows * cols + row * cols + col], rows and cols as element_dofs lists them
+  int rows = 0, cols = 0;
+  std::vector<int> outer, inner;  // the CSR pattern (no values: each term's block has its own)
+  std::vector<int> slots;         // [element * rows * cols + row * cols + col], rows and cols as element_dofs lists them
+  // A compressed matrix of this pattern, with zero values.
+  CsrMatrix zero_matrix() const;
 };
 
 // The dofs of a space an element of the region touches: all of its cell's (cells), or those on its

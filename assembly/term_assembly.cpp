@@ -100,7 +100,7 @@ void TermAssembly::build_blocks(TermAssemblyCache* cache) {
     const FESpace& trial = *spaces_[c.trial];
     patterns_.push_back(cache ? cache->pattern(geometry_, test, trial)
                               : std::make_shared<const BlockPattern>(make_block_pattern(*geometry_, test, trial)));
-    blocks_.push_back(patterns_.back()->matrix);
+    blocks_.push_back(patterns_.back()->zero_matrix());
   }
 }
 
