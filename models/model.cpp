@@ -12,12 +12,16 @@ namespace pc {
 struct Model::Field {
   FieldKind kind = FieldKind::Data;
   std::shared_ptr<const FESpace> space;
-  mutable Eigen::VectorXd values;  // an affine field's are recomputed on access
-  std::uint64_t version = 0;       // data fields: when they last changed
+  mutable Eigen::VectorXd values;  // an affine field's are computed on access, when what they read changed
+  std::uint64_t version = 0;       // when the values (unknowns, data) or the map (affine fields) last changed
   std::string base;                // affine fields
   double factor = 1;
   std::vector<std::string> history;
   std::vector<double> coefficients;
+  // Affine fields: the versions of the map, the base and each history field that `values` was computed
+  // from. Each residual reads u and a several times (every term and mat-vec that couples them), and each
+  // read was a pass over the dofs.
+  mutable std::vector<std::uint64_t> computed_from;
 };
 
 // A brick term bound to the mesh, with the model's meaning of each of its couplings.
@@ -101,6 +105,7 @@ void Model::add_unknown(const std::string& name, std::shared_ptr<const FESpace> 
   auto f = std::make_unique<Field>();
   f->kind = FieldKind::Unknown;
   f->values = Eigen::VectorXd::Zero(space->num_dofs());
+  f->version = ++clock_;
   f->space = std::move(space);
   fields_[name] = std::move(f);
   unknown_names_.push_back(name);
@@ -139,6 +144,7 @@ void Model::add_affine_field(const std::string& name, const std::string& base, s
   f->base = base;
   f->history = std::move(history);
   f->coefficients.assign(f->history.size(), 0.0);
+  f->version = ++clock_;
   fields_[name] = std::move(f);
 }
 
@@ -150,6 +156,7 @@ void Model::set_affine(const std::string& name, double factor, std::vector<doubl
   require(std::isfinite(factor), "Model: affine factor of '", name, "' is not finite: ", factor);
   f.factor = factor;
   f.coefficients = std::move(history_coefficients);
+  f.version = ++clock_;
 }
 
 double Model::affine_factor(const std::string& name) const {
@@ -168,10 +175,19 @@ std::shared_ptr<const FESpace> Model::space_ptr(const std::string& name) const {
 
 const Eigen::VectorXd& Model::values(const std::string& name) const {
   const Field& f = field(name);
-  if (f.kind == FieldKind::Affine) {
-    f.values = f.factor * field(f.base).values;
-    for (size_t i = 0; i < f.history.size(); ++i)
-      if (f.coefficients[i] != 0) f.values += f.coefficients[i] * field(f.history[i]).values;
+  if (f.kind != FieldKind::Affine) return f.values;
+  const Field& base = field(f.base);
+  bool current = f.computed_from.size() == f.history.size() + 2 && f.computed_from[0] == f.version &&
+                 f.computed_from[1] == base.version;
+  for (size_t i = 0; current && i < f.history.size(); ++i)
+    current = f.computed_from[i + 2] == field(f.history[i]).version;
+  if (current) return f.values;
+  f.values = f.factor * base.values;
+  f.computed_from = {f.version, base.version};
+  for (size_t i = 0; i < f.history.size(); ++i) {
+    const Field& h = field(f.history[i]);
+    if (f.coefficients[i] != 0) f.values += f.coefficients[i] * h.values;
+    f.computed_from.push_back(h.version);
   }
   return f.values;
 }
@@ -183,7 +199,7 @@ void Model::set_values(const std::string& name, const Eigen::VectorXd& values) {
           values.size(), " values");
   require(values.allFinite(), "Model: non-finite values given for '", name, "'");
   f.values = values;
-  if (f.kind == FieldKind::Data) f.version = ++clock_;
+  f.version = ++clock_;
 }
 
 void Model::set_constant(const std::string& name, Eigen::MatrixXd value) {
@@ -340,6 +356,7 @@ void Model::apply_dirichlet() {
   require(finalized_, "Model: apply_dirichlet() before finalize()");
   for (const DirichletCondition& d : dirichlet_) {
     Field& f = field(d.unknown);
+    f.version = ++clock_;  // first: a value refused below leaves the others changed
     const FESpace& s = *f.space;
     double value[3];
     for (int scalar : s.scalar_dofs_on(d.region)) {
@@ -652,15 +669,20 @@ void Model::set_free_values(const Eigen::VectorXd& x) {
   const DofLayout& l = layout();
   for (const std::string& u : unknown_names_) {
     const auto global = l.global_indices(l.field_index(u));
-    Eigen::VectorXd& values = field(u).values;
+    Field& f = field(u);
+    f.version = ++clock_;
     for (int d = 0; d < int(global.size()); ++d)
-      if (global[d] >= 0) values[d] = x[global[d]];
+      if (global[d] >= 0) f.values[d] = x[global[d]];
   }
 }
 
 void Model::add_to_free_values(const Eigen::VectorXd& step) {
   const DofLayout& l = layout();
-  for (const std::string& u : unknown_names_) l.add_from_global(l.field_index(u), step, field(u).values);
+  for (const std::string& u : unknown_names_) {
+    Field& f = field(u);
+    f.version = ++clock_;
+    l.add_from_global(l.field_index(u), step, f.values);
+  }
 }
 
 const CsrMatrix& Model::linear_jacobian() {
