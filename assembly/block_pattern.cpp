@@ -43,15 +43,6 @@ BlockPattern make_block_pattern(const RegionGeometry& geometry, const FESpace& t
   CsrMatrix matrix(test.num_dofs(), trial.num_dofs());
   matrix.setFromTriplets(entries.begin(), entries.end());
   matrix.makeCompressed();
-  const size_t count = entries.size();  // one slot per element entry
-  std::vector<Eigen::Triplet<double, int>>().swap(entries);  // before the slots grow to their size
-  p.slots.reserve(count);
-  for (int e = 0; e < geometry.num_elements(); ++e) {
-    element_dofs(test, geometry, e, rows);
-    element_dofs(trial, geometry, e, cols);
-    for (int r : rows)
-      for (int c : cols) p.slots.push_back(find_slot(matrix, r, c));
-  }
   p.rows = int(matrix.rows());
   p.cols = int(matrix.cols());
   p.outer.assign(matrix.outerIndexPtr(), matrix.outerIndexPtr() + matrix.rows() + 1);

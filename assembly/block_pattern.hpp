@@ -1,9 +1,8 @@
 #pragma once
 // The sparsity pattern of a tangent block between two FE spaces over a region (rows: dofs of the test
-// space, columns: dofs of the trial space) and, for every element of the region, the slots its local
-// entries scatter to, so that assembly writes straight into CSR values. It depends on the region's
-// elements and the two spaces only: terms over the same region and spaces (elasticity, viscosity and
-// inertia on the body's velocity) share one (assembly/term_assembly_cache.hpp).
+// space, columns: dofs of the trial space): the union of the elements' local blocks. It depends on the
+// region's elements and the two spaces only: terms over the same region and spaces (elasticity, viscosity
+// and inertia on the body's velocity) share one (assembly/term_assembly_cache.hpp).
 #include <vector>
 
 #include "assembly/fe_space.hpp"
@@ -15,7 +14,6 @@ namespace pc {
 struct BlockPattern {
   int rows = 0, cols = 0;
   std::vector<int> outer, inner;  // the CSR pattern (no values: each term's block has its own)
-  std::vector<int> slots;         // [element * rows * cols + row * cols + col], rows and cols as element_dofs lists them
   // A compressed matrix of this pattern, with zero values.
   CsrMatrix zero_matrix() const;
 };

@@ -86,21 +86,18 @@ const TermAssembly::ShapeTable& TermAssembly::table(int field, int local_face) c
   return tables_[field][local_face + 1];
 }
 
-// The same order as the block patterns' slots (assembly/block_pattern.hpp), whose function it is.
+// The dofs in the order of the block patterns' elements (assembly/block_pattern.hpp), whose function it is.
 void TermAssembly::element_dofs(int field, int element, std::vector<int>& dofs) const {
   pc::element_dofs(*spaces_[field], *geometry_, element, dofs);
 }
 
 void TermAssembly::build_blocks(TermAssemblyCache* cache) {
-  const auto& couplings = term_->couplings();
   blocks_.clear();
-  patterns_.clear();
-  for (const Coupling& c : couplings) {
+  for (const Coupling& c : term_->couplings()) {
     const FESpace& test = *spaces_[c.test];
     const FESpace& trial = *spaces_[c.trial];
-    patterns_.push_back(cache ? cache->pattern(geometry_, test, trial)
-                              : std::make_shared<const BlockPattern>(make_block_pattern(*geometry_, test, trial)));
-    blocks_.push_back(patterns_.back()->zero_matrix());
+    blocks_.push_back(cache ? cache->pattern(geometry_, test, trial)->zero_matrix()
+                            : make_block_pattern(*geometry_, test, trial).zero_matrix());
   }
 }
 
@@ -202,11 +199,20 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
     if (tangent) {
       for (int k = 0; k < int(term.couplings().size()); ++k) {
         const Eigen::MatrixXd& K = local.tangent[k];
-        const int rows = static_cast<int>(K.rows()), cols = static_cast<int>(K.cols());
-        const int* slot = patterns_[k]->slots.data() + size_t(e) * rows * cols;
-        double* target = blocks_[k].valuePtr();
-        for (int r = 0; r < rows; ++r)
-          for (int c = 0; c < cols; ++c) target[slot[r * cols + c]] += K(r, c);
+        const std::vector<int>& row_dofs = dofs[term.couplings()[k].test];
+        const std::vector<int>& col_dofs = dofs[term.couplings()[k].trial];
+        CsrMatrix& block = blocks_[k];
+        const int* outer = block.outerIndexPtr();
+        const int* inner = block.innerIndexPtr();
+        double* target = block.valuePtr();
+        // Each entry is in its row's pattern (the element made it): a binary search over the row's sorted
+        // columns finds its slot.
+        for (int r = 0; r < int(K.rows()); ++r) {
+          const int* begin = inner + outer[row_dofs[r]];
+          const int* end = inner + outer[row_dofs[r] + 1];
+          for (int c = 0; c < int(K.cols()); ++c)
+            target[std::lower_bound(begin, end, col_dofs[c]) - inner] += K(r, c);
+        }
       }
     }
     ++elements_assembled_;

@@ -1,10 +1,11 @@
 #pragma once
 // A term bound to a region and to the FE spaces of its fields: the engine's element loop. Built once, it
 // holds the shape-function tables at the region's quadrature points, the sparsity pattern of each tangent
-// block (rows: dofs of the test field's space, columns: dofs of the trial field's space) and, for every
-// element, the slots its local entries scatter to, so that assembly writes straight into CSR values
-// (assembly/block_pattern.hpp). The geometry and the patterns can come from a TermAssemblyCache, shared with
-// the other terms over the same region and spaces; the tangent blocks' values are the term's own.
+// block (rows: dofs of the test field's space, columns: dofs of the trial field's space), into which each
+// element's local entries are added where a search of their row finds them (a table of those slots, an
+// int per element entry, was the largest part of a model's memory, for work done once per change of a
+// linear brick's data). The geometry and the patterns can come from a TermAssemblyCache, shared with the
+// other terms over the same region and spaces; the tangent blocks' values are the term's own.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -65,7 +66,6 @@ class TermAssembly {
   std::vector<const FESpace*> spaces_;
   std::vector<std::vector<ShapeTable>> tables_;  // [field][local_face + 1]
   std::vector<CsrMatrix> blocks_;
-  std::vector<std::shared_ptr<const BlockPattern>> patterns_;  // per coupling: its block's pattern and slots
   std::int64_t elements_assembled_ = 0;
 };
 

@@ -21,4 +21,9 @@ std::shared_ptr<const BlockPattern> TermAssemblyCache::pattern(const std::shared
   return slot;
 }
 
+void TermAssemblyCache::forget_patterns() {
+  patterns_.clear();
+  pattern_geometries_.clear();
+}
+
 }  // namespace pc

@@ -1,8 +1,8 @@
 #pragma once
 // What the terms bound to one mesh share, computed once (a model's body terms -- elasticity, viscosity,
 // inertia, piezoelectric coupling, permittivity -- all integrate over the body): the geometry of a region at
-// a quadrature degree, and the pattern and scatter slots of a block between two spaces over it. Without it
-// each term kept its own copies, the largest part of a model's memory before its factorisation.
+// a quadrature degree, and the pattern of a block between two spaces over it. Without it each term kept
+// (and computed) its own copies, the largest part of a model's memory before its factorisation.
 // Entries live as long as the cache; geometries and spaces are told apart by identity.
 #include <map>
 #include <memory>
@@ -27,6 +27,9 @@ class TermAssemblyCache {
   // The spaces must outlive the cache (a model's do: they are its fields').
   std::shared_ptr<const BlockPattern> pattern(const std::shared_ptr<const RegionGeometry>& geometry,
                                               const FESpace& test, const FESpace& trial);
+  // Drops the patterns (the terms' blocks have them): once a model's terms are bound they would only
+  // serve a brick rebuilt later, which makes its own again.
+  void forget_patterns();
 
  private:
   const Mesh& mesh_;

@@ -334,6 +334,7 @@ void Model::finalize() {
             "' is used by no brick; remove it or add the brick that needs it");
 
   for (int b = 0; b < int(bricks_.size()); ++b) bind_brick(b);
+  assembly_cache_->forget_patterns();  // the blocks have them; the geometries stay shared
   for (const auto& brick : bricks_)
     for (const DirichletCondition& d : brick->dirichlet_conditions()) {
       const FESpace& s = space(d.unknown);

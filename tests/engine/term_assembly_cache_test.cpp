@@ -64,6 +64,12 @@ TEST_F(TermAssemblyCacheTest, TermsOverOneRegionAndSpaceShareOneGeometryAndPatte
   EXPECT_EQ(cache.pattern(cache.geometry("all", 4), space, space).get(),
             cache.pattern(cache.geometry("all", 4), space, space).get());
   EXPECT_NE(diffusion.block(0).valuePtr(), reaction.block(0).valuePtr());
+  const auto pattern = cache.pattern(cache.geometry("all", 4), space, space);
+  cache.forget_patterns();  // a pattern asked for again is made again, the same
+  const auto again = cache.pattern(cache.geometry("all", 4), space, space);
+  EXPECT_NE(again.get(), pattern.get());
+  EXPECT_EQ(again->outer, pattern->outer);
+  EXPECT_EQ(again->inner, pattern->inner);
   TermAssembly bottom(term(Integration::Faces, Reaction{2.0}), "bottom", {&space}, cache);
   EXPECT_NE(&bottom.geometry(), &diffusion.geometry());
   EXPECT_EQ(&bottom.geometry().mesh(), mesh.get());
