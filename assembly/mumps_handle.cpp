@@ -49,6 +49,15 @@ void MumpsHandle::set_pattern(const CsrMatrix& a) {
   mumps_.a = nullptr;  // no values: the analysis depends on the pattern only
 }
 
+bool MumpsHandle::has_pattern(const CsrMatrix& a) const {
+  if (!a.isCompressed() || a.rows() != a.cols() || a.rows() != mumps_.n || a.nonZeros() != long(rows_.size()))
+    return false;
+  for (int row = 0; row < a.rows(); ++row)
+    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
+      if (rows_[slot] != row + 1 || cols_[slot] != a.innerIndexPtr()[slot] + 1) return false;
+  return true;
+}
+
 void MumpsHandle::run(Job job, const char* phase) {
   mumps_.job = job;
   dmumps_c(&mumps_);

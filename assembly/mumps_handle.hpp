@@ -25,6 +25,8 @@ class MumpsHandle {
 
   // Points MUMPS at the pattern of `a` (row and column indices kept here), without values.
   void set_pattern(const CsrMatrix& a);
+  // Whether `a` has the pattern last given to set_pattern (so that a caller need keep no copy to compare).
+  bool has_pattern(const CsrMatrix& a) const;
   // Runs a job; throws pc::Error naming the owner and the phase on failure (numerically singular
   // matrices get their own message).
   void run(Job job, const char* phase);

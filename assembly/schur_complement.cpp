@@ -18,13 +18,12 @@ void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interf
     require(!seen[dof], "Schur complement: interface unknown ", dof, " is listed twice");
     seen[dof] = 1;
   }
-  matrix_ = a;
   interface_ = interface;
   listvar_.resize(interface.size());
   for (size_t k = 0; k < interface.size(); ++k) listvar_[k] = interface[k] + 1;
   const auto m = static_cast<MUMPS_INT>(interface.size());
   schur_.resize(m, m);
-  mumps_.set_pattern(matrix_);
+  mumps_.set_pattern(a);
   mumps_.icntl(19) = 1;  // the Schur complement, whole, on the host
   mumps_->size_schur = m;
   mumps_->listvar_schur = listvar_.data();
@@ -35,18 +34,23 @@ void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interf
 }
 
 bool SchurComplement::is_analyzed_for(const CsrMatrix& a, const std::vector<int>& interface) const {
-  return analyzed_ && a.isCompressed() && interface == interface_ && same_pattern(a, matrix_);
+  return analyzed_ && interface == interface_ && mumps_.has_pattern(a);
 }
 
 void SchurComplement::factorize(const CsrMatrix& a) {
-  require(analyzed_ && a.isCompressed() && same_pattern(a, matrix_),
-          "Schur complement: factorize() needs analyze() on this pattern first");
+  require(analyzed_ && mumps_.has_pattern(a), "Schur complement: factorize() needs analyze() on this pattern first");
   require(Eigen::Map<const Eigen::VectorXd>(a.valuePtr(), a.nonZeros()).allFinite(),
           "Schur complement: the matrix contains NaN/Inf");
   factorized_ = false;
-  std::copy_n(a.valuePtr(), a.nonZeros(), matrix_.valuePtr());
-  mumps_->a = matrix_.valuePtr();
+  // MUMPS only reads the values (its C interface is not const-correct), and only here: without iterative
+  // refinement or error analysis (ICNTL(10), ICNTL(11) at their default 0) a solve uses the factors alone.
+  // The pointer is cleared again, so that nothing can read the caller's matrix after it changed.
+  mumps_->a = const_cast<double*>(a.valuePtr());
   mumps_->schur = schur_.data();
+  struct ClearValues {
+    DMUMPS_STRUC_C& mumps;
+    ~ClearValues() { mumps.a = nullptr; }
+  } clear_values{*mumps_};
   mumps_.run(MumpsHandle::Factorize, "factorization");
   // MUMPS returns the unsymmetric Schur complement "by rows" (Fortran's view): column-major storage
   // thus holds its transpose.
@@ -58,8 +62,8 @@ void SchurComplement::factorize(const CsrMatrix& a) {
 // the interface solution, and the backward substitution completes x in RHS.
 void SchurComplement::solve_phase(Eigen::VectorXd& rhs, Eigen::VectorXd& reduced, int phase) {
   require(factorized_, "Schur complement: solve needs a successful factorize() first");
-  require(rhs.size() == matrix_.rows(), "Schur complement: the right-hand side has ", rhs.size(), " rows, not ",
-          matrix_.rows());
+  require(rhs.size() == mumps_->n, "Schur complement: the right-hand side has ", rhs.size(), " rows, not ",
+          mumps_->n);
   require(rhs.allFinite(), "Schur complement: the right-hand side contains NaN/Inf");
   mumps_.icntl(26) = phase;
   mumps_->rhs = rhs.data();

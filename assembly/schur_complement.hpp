@@ -24,7 +24,8 @@ class SchurComplement {
   // the Schur complement's rows and columns follow it).
   void analyze(const CsrMatrix& a, const std::vector<int>& interface);
   bool is_analyzed_for(const CsrMatrix& a, const std::vector<int>& interface) const;
-  // Numeric phase: factorises A_ii and computes S. The pattern must be the analysed one.
+  // Numeric phase: factorises A_ii and computes S. The pattern must be the analysed one; `a` is read
+  // during the call only (the solves need the factors, not the matrix).
   void factorize(const CsrMatrix& a);
 
   const std::vector<int>& interface() const { return interface_; }
@@ -36,8 +37,9 @@ class SchurComplement {
  private:
   void solve_phase(Eigen::VectorXd& rhs, Eigen::VectorXd& reduced, int phase);
 
+  // MUMPS keeps the pattern (its coordinates); the values it reads only while it factorises, from the
+  // caller's matrix, so that no copy of the matrix is kept (it would be the largest after the factors).
   MumpsHandle mumps_{"Schur complement (MUMPS)"};
-  CsrMatrix matrix_;  // own copy: MUMPS reads its arrays
   std::vector<int> interface_;
   std::vector<MUMPS_INT> listvar_;
   Eigen::MatrixXd schur_;

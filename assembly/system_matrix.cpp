@@ -55,21 +55,20 @@ void SystemMatrix::finalize() {
   for (Block& b : blocks_) {
     const auto rows = layout_.global_indices(b.row_field);
     const auto cols = layout_.global_indices(b.col_field);
-    b.slots.assign(b.nnz, -1);
-    for (int r = 0; r < b.rows; ++r) {
-      if (rows[r] < 0) continue;
-      for (int k = b.outer[r]; k < b.outer[r + 1]; ++k)
-        if (cols[b.inner[k]] >= 0) b.slots[k] = find_slot(matrix_, rows[r], cols[b.inner[k]]);
-    }
-    b.outer = {};
-    b.inner = {};
+    for (int r = 0; r < b.rows && !b.any_free; ++r)
+      if (rows[r] >= 0)
+        for (int k = b.outer[r]; k < b.outer[r + 1] && !b.any_free; ++k) b.any_free = cols[b.inner[k]] >= 0;
+    // The declared pattern is no longer needed: swapping with empty vectors frees it, which `= {}` (a
+    // clear that keeps the capacity) would not.
+    std::vector<int>().swap(b.outer);
+    std::vector<int>().swap(b.inner);
   }
   finalized_ = true;
 }
 
 void SystemMatrix::set_zero() { std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0); }
 
-void SystemMatrix::set_values(const std::vector<double>& values) {
+void SystemMatrix::set_values(std::span<const double> values) {
   require(finalized_ && long(values.size()) == long(matrix_.nonZeros()), "SystemMatrix: set_values() with ",
           values.size(), " values for ", matrix_.nonZeros(), " non-zeros");
   std::copy(values.begin(), values.end(), matrix_.valuePtr());
@@ -79,12 +78,31 @@ void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
   require(finalized_, "SystemMatrix: add() before finalize()");
   require(handle >= 0 && handle < num_blocks(), "SystemMatrix: unknown block handle ", handle);
   const Block& b = blocks_[handle];
-  require(block.nonZeros() == b.nnz && block.rows() == b.rows, "SystemMatrix: block ", handle,
-          " changed its pattern since it was declared");
+  require(block.isCompressed() && block.nonZeros() == b.nnz && block.rows() == b.rows && block.cols() == b.cols,
+          "SystemMatrix: block ", handle, " changed its pattern since it was declared");
+  if (!b.any_free) return;
+  const auto rows = layout_.global_indices(b.row_field);
+  const auto cols = layout_.global_indices(b.col_field);
+  const int* block_outer = block.outerIndexPtr();
+  const int* block_inner = block.innerIndexPtr();
   const double* values = block.valuePtr();
+  const int* outer = matrix_.outerIndexPtr();
+  const int* inner = matrix_.innerIndexPtr();
   double* target = matrix_.valuePtr();
-  for (long k = 0; k < b.nnz; ++k)
-    if (b.slots[k] >= 0) target[b.slots[k]] += factor * values[k];
+  for (int r = 0; r < b.rows; ++r) {
+    const int row = rows[r];
+    if (row < 0) continue;
+    int slot = outer[row];
+    const int end = outer[row + 1];
+    for (int k = block_outer[r]; k < block_outer[r + 1]; ++k) {
+      const int col = cols[block_inner[k]];
+      if (col < 0) continue;
+      while (slot < end && inner[slot] < col) ++slot;
+      require(slot < end && inner[slot] == col, "SystemMatrix: block ", handle, " has an entry (", r, ", ",
+              block_inner[k], ") outside the pattern it was declared with");
+      target[slot] += factor * values[k];
+    }
+  }
 }
 
 }  // namespace pc

@@ -1,8 +1,12 @@
 #pragma once
 // The global matrix of a system on the free dofs of a DofLayout. Field blocks (CSR matrices in field
 // numbering, e.g. TermAssembly::block) are declared once; finalize() builds the global pattern as their
-// union and maps every block entry to its global slot, so that summing blocks with scheme factors,
-// J = sum_b factor_b * K_b, costs one pass over the blocks' non-zeros with no search or sorting.
+// union. Summing blocks with scheme factors, J = sum_b factor_b * K_b, merges each block row into its
+// global row: a field's free dofs are numbered in increasing order (DofLayout), so the block's columns
+// meet the global row's in the same order, and the sum costs one pass over the block's non-zeros and the
+// rows they fall in, with no search, no sorting and no map of the block's entries to keep (such a map,
+// an int per block entry, was the size of the matrix again).
+#include <span>
 #include <vector>
 
 #include "assembly/dof_layout.hpp"
@@ -20,19 +24,20 @@ class SystemMatrix {
   bool finalized() const { return finalized_; }
 
   void set_zero();
-  // matrix += factor * block (the block must have the pattern it was declared with).
+  // matrix += factor * block (the block must have the pattern it was declared with; an entry outside the
+  // global pattern is refused).
   void add(int handle, const CsrMatrix& block, double factor = 1.0);
   const CsrMatrix& matrix() const { return matrix_; }
   // The values in pattern order, e.g. to keep a partial sum and restore it without re-adding blocks.
   std::vector<double> values() const { return {matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros()}; }
-  void set_values(const std::vector<double>& values);
+  void set_values(std::span<const double> values);
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
 
  private:
   struct Block {
     int row_field, col_field, rows, cols;
     long nnz;
-    std::vector<int> slots;  // global slot of each block entry, -1 where a row or column is constrained
+    bool any_free = false;          // an entry on a free row and column: a frozen field's blocks have none
     std::vector<int> outer, inner;  // the declared pattern, kept until finalize()
   };
   const DofLayout& layout_;

@@ -22,8 +22,16 @@ TermAssembly::TermAssembly(std::shared_ptr<const Term> term, const std::string& 
                                                           term->quadrature_degree(highest_order(spaces))),
                    spaces) {}
 
+TermAssembly::TermAssembly(std::shared_ptr<const Term> term, const std::string& region,
+                           std::vector<const FESpace*> spaces, TermAssemblyCache& cache)
+    : TermAssembly(term, cache.geometry(region, term->quadrature_degree(highest_order(spaces))), spaces, &cache) {}
+
 TermAssembly::TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<const RegionGeometry> geometry,
                            std::vector<const FESpace*> spaces)
+    : TermAssembly(std::move(term), std::move(geometry), std::move(spaces), nullptr) {}
+
+TermAssembly::TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<const RegionGeometry> geometry,
+                           std::vector<const FESpace*> spaces, TermAssemblyCache* cache)
     : term_(std::move(term)), geometry_(std::move(geometry)), spaces_(std::move(spaces)) {
   const Term& t = *term_;
   require(spaces_.size() == t.fields().size(), "term '", t.name(), "' names ", t.fields().size(),
@@ -71,51 +79,25 @@ TermAssembly::TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<con
       }
     }
   }
-  build_blocks();
+  build_blocks(cache);
 }
 
 const TermAssembly::ShapeTable& TermAssembly::table(int field, int local_face) const {
   return tables_[field][local_face + 1];
 }
 
+// The dofs in the order of the block patterns' elements (assembly/block_pattern.hpp), whose function it is.
 void TermAssembly::element_dofs(int field, int element, std::vector<int>& dofs) const {
-  const FESpace& space = *spaces_[field];
-  const auto cell_dofs = space.cell_scalar_dofs(geometry_->cell(element));
-  const ShapeTable& t = table(field, geometry_->local_face(element));
-  const int nc = space.num_components();
-  dofs.resize(t.local_dofs.size() * nc);
-  for (int i = 0; i < int(t.local_dofs.size()); ++i)
-    for (int c = 0; c < nc; ++c) dofs[i * nc + c] = space.dof(cell_dofs[t.local_dofs[i]], c);
+  pc::element_dofs(*spaces_[field], *geometry_, element, dofs);
 }
 
-void TermAssembly::build_blocks() {
-  const auto& couplings = term_->couplings();
-  blocks_.resize(couplings.size());
-  slots_.resize(couplings.size());
-  std::vector<int> rows, cols;
-  for (int k = 0; k < int(couplings.size()); ++k) {
-    const FESpace& test = *spaces_[couplings[k].test];
-    const FESpace& trial = *spaces_[couplings[k].trial];
-    std::vector<Eigen::Triplet<double, int>> entries;
-    for (int e = 0; e < geometry_->num_elements(); ++e) {
-      element_dofs(couplings[k].test, e, rows);
-      element_dofs(couplings[k].trial, e, cols);
-      for (int r : rows)
-        for (int c : cols) entries.emplace_back(r, c, 0.0);
-    }
-    CsrMatrix& block = blocks_[k];
-    block.resize(test.num_dofs(), trial.num_dofs());
-    block.setFromTriplets(entries.begin(), entries.end());
-    block.makeCompressed();
-    std::vector<int>& slots = slots_[k];
-    slots.clear();
-    slots.reserve(entries.size());
-    for (int e = 0; e < geometry_->num_elements(); ++e) {
-      element_dofs(couplings[k].test, e, rows);
-      element_dofs(couplings[k].trial, e, cols);
-      for (int r : rows)
-        for (int c : cols) slots.push_back(find_slot(block, r, c));
-    }
+void TermAssembly::build_blocks(TermAssemblyCache* cache) {
+  blocks_.clear();
+  for (const Coupling& c : term_->couplings()) {
+    const FESpace& test = *spaces_[c.test];
+    const FESpace& trial = *spaces_[c.trial];
+    blocks_.push_back(cache ? cache->pattern(geometry_, test, trial)->zero_matrix()
+                            : make_block_pattern(*geometry_, test, trial).zero_matrix());
   }
 }
 
@@ -217,11 +199,20 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
     if (tangent) {
       for (int k = 0; k < int(term.couplings().size()); ++k) {
         const Eigen::MatrixXd& K = local.tangent[k];
-        const int rows = static_cast<int>(K.rows()), cols = static_cast<int>(K.cols());
-        const int* slot = slots_[k].data() + size_t(e) * rows * cols;
-        double* target = blocks_[k].valuePtr();
-        for (int r = 0; r < rows; ++r)
-          for (int c = 0; c < cols; ++c) target[slot[r * cols + c]] += K(r, c);
+        const std::vector<int>& row_dofs = dofs[term.couplings()[k].test];
+        const std::vector<int>& col_dofs = dofs[term.couplings()[k].trial];
+        CsrMatrix& block = blocks_[k];
+        const int* outer = block.outerIndexPtr();
+        const int* inner = block.innerIndexPtr();
+        double* target = block.valuePtr();
+        // Each entry is in its row's pattern (the element made it): a binary search over the row's sorted
+        // columns finds its slot.
+        for (int r = 0; r < int(K.rows()); ++r) {
+          const int* begin = inner + outer[row_dofs[r]];
+          const int* end = inner + outer[row_dofs[r] + 1];
+          for (int c = 0; c < int(K.cols()); ++c)
+            target[std::lower_bound(begin, end, col_dofs[c]) - inner] += K(r, c);
+        }
       }
     }
     ++elements_assembled_;

@@ -1,8 +1,11 @@
 #pragma once
 // A term bound to a region and to the FE spaces of its fields: the engine's element loop. Built once, it
 // holds the shape-function tables at the region's quadrature points, the sparsity pattern of each tangent
-// block (rows: dofs of the test field's space, columns: dofs of the trial field's space) and, for every
-// element, the slots its local entries scatter to, so that assembly writes straight into CSR values.
+// block (rows: dofs of the test field's space, columns: dofs of the trial field's space), into which each
+// element's local entries are added where a search of their row finds them (a table of those slots, an
+// int per element entry, was the largest part of a model's memory, for work done once per change of a
+// linear brick's data). The geometry and the patterns can come from a TermAssemblyCache, shared with the
+// other terms over the same region and spaces; the tangent blocks' values are the term's own.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -10,10 +13,12 @@
 
 #include <Eigen/Core>
 
+#include "assembly/block_pattern.hpp"
 #include "assembly/fe_space.hpp"
 #include "assembly/region_geometry.hpp"
 #include "assembly/sparse.hpp"
 #include "assembly/term.hpp"
+#include "assembly/term_assembly_cache.hpp"
 
 namespace pc {
 
@@ -25,6 +30,10 @@ class TermAssembly {
                std::vector<const FESpace*> spaces);
   // The same, with a geometry of its own at the degree the term asks for its highest field order.
   TermAssembly(std::shared_ptr<const Term> term, const std::string& region, std::vector<const FESpace*> spaces);
+  // The same, with the geometry and the block patterns the cache holds (made there if new), shared with the
+  // cache's other terms. The cache must outlive the assembly.
+  TermAssembly(std::shared_ptr<const Term> term, const std::string& region, std::vector<const FESpace*> spaces,
+               TermAssemblyCache& cache);
 
   const Term& term() const { return *term_; }
   const RegionGeometry& geometry() const { return *geometry_; }
@@ -46,16 +55,17 @@ class TermAssembly {
     std::vector<double> N;        // [q * n + i]
     std::vector<double> dN;       // reference gradients [(q * n + i) * dim + d]; cells only
   };
+  TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<const RegionGeometry> geometry,
+               std::vector<const FESpace*> spaces, TermAssemblyCache* cache);
   const ShapeTable& table(int field, int local_face) const;
   void element_dofs(int field, int element, std::vector<int>& dofs) const;
-  void build_blocks();
+  void build_blocks(TermAssemblyCache* cache);
 
   std::shared_ptr<const Term> term_;
   std::shared_ptr<const RegionGeometry> geometry_;
   std::vector<const FESpace*> spaces_;
   std::vector<std::vector<ShapeTable>> tables_;  // [field][local_face + 1]
   std::vector<CsrMatrix> blocks_;
-  std::vector<std::vector<int>> slots_;          // [coupling][element * rows * cols + row * cols + col]
   std::int64_t elements_assembled_ = 0;
 };
 

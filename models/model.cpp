@@ -1,6 +1,7 @@
 #include "models/model.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
 
@@ -11,12 +12,16 @@ namespace pc {
 struct Model::Field {
   FieldKind kind = FieldKind::Data;
   std::shared_ptr<const FESpace> space;
-  mutable Eigen::VectorXd values;  // an affine field's are recomputed on access
-  std::uint64_t version = 0;       // data fields: when they last changed
+  mutable Eigen::VectorXd values;  // an affine field's are computed on access, when what they read changed
+  std::uint64_t version = 0;       // when the values (unknowns, data) or the map (affine fields) last changed
   std::string base;                // affine fields
   double factor = 1;
   std::vector<std::string> history;
   std::vector<double> coefficients;
+  // Affine fields: the versions of the map, the base and each history field that `values` was computed
+  // from. Each residual reads u and a several times (every term and mat-vec that couples them), and each
+  // read was a pass over the dofs.
+  mutable std::vector<std::uint64_t> computed_from;
 };
 
 // A brick term bound to the mesh, with the model's meaning of each of its couplings.
@@ -44,13 +49,13 @@ struct Model::System {
   DofLayout layout;
   std::unique_ptr<SystemMatrix> matrix;
   std::vector<std::vector<std::vector<int>>> handles;  // [brick][term][coupling]
-  std::vector<double> linear_values;
+  // The sum of the linear blocks with the scheme's factors, with the Jacobian's pattern: each Jacobian
+  // starts from its values, and linear_jacobian() is this matrix (one copy serves both).
+  CsrMatrix linear_matrix;
   std::uint64_t linear_stamp = ~std::uint64_t(0);  // linear_version_ the sum was made with
   std::vector<double> linear_factors;              // affine factors it was made with
   std::uint64_t linear_sum = 0;                    // Model::linear_sums_ when it was last made
   std::vector<int> nonlinear_dofs;                 // free dofs that nonlinear blocks touch, sorted
-  CsrMatrix linear_matrix;                         // the linear sum as a matrix, made on request
-  std::uint64_t linear_matrix_sum = 0;
 };
 
 namespace {
@@ -72,6 +77,7 @@ std::vector<double> in_layout_order(const DofLayout& l, const std::map<std::stri
 
 Model::Model(std::shared_ptr<const Mesh> mesh) : mesh_(std::move(mesh)) {
   require(mesh_ != nullptr, "Model: no mesh");
+  assembly_cache_ = std::make_unique<TermAssemblyCache>(*mesh_);
 }
 
 Model::~Model() = default;
@@ -99,6 +105,7 @@ void Model::add_unknown(const std::string& name, std::shared_ptr<const FESpace> 
   auto f = std::make_unique<Field>();
   f->kind = FieldKind::Unknown;
   f->values = Eigen::VectorXd::Zero(space->num_dofs());
+  f->version = ++clock_;
   f->space = std::move(space);
   fields_[name] = std::move(f);
   unknown_names_.push_back(name);
@@ -137,6 +144,7 @@ void Model::add_affine_field(const std::string& name, const std::string& base, s
   f->base = base;
   f->history = std::move(history);
   f->coefficients.assign(f->history.size(), 0.0);
+  f->version = ++clock_;
   fields_[name] = std::move(f);
 }
 
@@ -148,6 +156,7 @@ void Model::set_affine(const std::string& name, double factor, std::vector<doubl
   require(std::isfinite(factor), "Model: affine factor of '", name, "' is not finite: ", factor);
   f.factor = factor;
   f.coefficients = std::move(history_coefficients);
+  f.version = ++clock_;
 }
 
 double Model::affine_factor(const std::string& name) const {
@@ -166,10 +175,19 @@ std::shared_ptr<const FESpace> Model::space_ptr(const std::string& name) const {
 
 const Eigen::VectorXd& Model::values(const std::string& name) const {
   const Field& f = field(name);
-  if (f.kind == FieldKind::Affine) {
-    f.values = f.factor * field(f.base).values;
-    for (size_t i = 0; i < f.history.size(); ++i)
-      if (f.coefficients[i] != 0) f.values += f.coefficients[i] * field(f.history[i]).values;
+  if (f.kind != FieldKind::Affine) return f.values;
+  const Field& base = field(f.base);
+  bool current = f.computed_from.size() == f.history.size() + 2 && f.computed_from[0] == f.version &&
+                 f.computed_from[1] == base.version;
+  for (size_t i = 0; current && i < f.history.size(); ++i)
+    current = f.computed_from[i + 2] == field(f.history[i]).version;
+  if (current) return f.values;
+  f.values = f.factor * base.values;
+  f.computed_from = {f.version, base.version};
+  for (size_t i = 0; i < f.history.size(); ++i) {
+    const Field& h = field(f.history[i]);
+    if (f.coefficients[i] != 0) f.values += f.coefficients[i] * h.values;
+    f.computed_from.push_back(h.version);
   }
   return f.values;
 }
@@ -181,7 +199,7 @@ void Model::set_values(const std::string& name, const Eigen::VectorXd& values) {
           values.size(), " values");
   require(values.allFinite(), "Model: non-finite values given for '", name, "'");
   f.values = values;
-  if (f.kind == FieldKind::Data) f.version = ++clock_;
+  f.version = ++clock_;
 }
 
 void Model::set_constant(const std::string& name, Eigen::MatrixXd value) {
@@ -281,7 +299,7 @@ void Model::bind_brick(int index) {
     }
     for (const std::string& name : b.field_names)
       if (!coupled.count(name) && field_kind(name) == FieldKind::Data) b.uncoupled_data.push_back(name);
-    b.assembly = std::make_unique<TermAssembly>(bt.term, bt.region, spaces);
+    b.assembly = std::make_unique<TermAssembly>(bt.term, bt.region, spaces, *assembly_cache_);
     // A rebuilt term must keep its pattern: the system matrix was declared with it.
     if (bound.size() < state.terms.size()) {
       const BoundTerm& old = state.terms[bound.size()];
@@ -316,6 +334,7 @@ void Model::finalize() {
             "' is used by no brick; remove it or add the brick that needs it");
 
   for (int b = 0; b < int(bricks_.size()); ++b) bind_brick(b);
+  assembly_cache_->forget_patterns();  // the blocks have them; the geometries stay shared
   for (const auto& brick : bricks_)
     for (const DirichletCondition& d : brick->dirichlet_conditions()) {
       const FESpace& s = space(d.unknown);
@@ -338,6 +357,7 @@ void Model::apply_dirichlet() {
   require(finalized_, "Model: apply_dirichlet() before finalize()");
   for (const DirichletCondition& d : dirichlet_) {
     Field& f = field(d.unknown);
+    f.version = ++clock_;  // first: a value refused below leaves the others changed
     const FESpace& s = *f.space;
     double value[3];
     for (int scalar : s.scalar_dofs_on(d.region)) {
@@ -463,7 +483,11 @@ void Model::refresh_linear_sum(System& s) {
         s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
     }
   }
-  s.linear_values = s.matrix->values();
+  const CsrMatrix& sum = s.matrix->matrix();
+  if (s.linear_matrix.rows() != sum.rows() || s.linear_matrix.nonZeros() != sum.nonZeros())
+    s.linear_matrix = sum;  // the first sum: the pattern with the values
+  else
+    std::copy_n(sum.valuePtr(), sum.nonZeros(), s.linear_matrix.valuePtr());
 }
 
 void Model::assemble(bool tangent) {
@@ -529,7 +553,11 @@ void Model::assemble(bool tangent) {
         continue;
       }
       outputs.assign(bt.test_unknowns.size(), nullptr);
-      if (!state.tangent_valid) bt.assembly->assemble(values, time_, outputs, true);
+      if (!state.tangent_valid) {
+        const auto start = std::chrono::steady_clock::now();
+        bt.assembly->assemble(values, time_, outputs, true);
+        jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
     }
     if (!brick.linear()) {
       for (const std::string& u : touched) measure_and_add(u);
@@ -590,6 +618,7 @@ void Model::assemble(bool tangent) {
   }
 
   if (tangent) {
+    const auto start = std::chrono::steady_clock::now();
     std::vector<double> factors;
     for (const auto& [name, f] : fields_)
       if (f->kind == FieldKind::Affine) factors.push_back(f->factor);
@@ -599,7 +628,7 @@ void Model::assemble(bool tangent) {
       s.linear_factors = factors;
       s.linear_sum = ++linear_sums_;
     }
-    s.matrix->set_values(s.linear_values);
+    s.matrix->set_values({s.linear_matrix.valuePtr(), size_t(s.linear_matrix.nonZeros())});
     for (int b = 0; b < int(bricks_.size()); ++b) {
       if (bricks_[b]->linear()) continue;
       const BrickState& state = *brick_states_[b];
@@ -609,6 +638,7 @@ void Model::assemble(bool tangent) {
           s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
       }
     }
+    jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
   residual_ = Eigen::VectorXd::Zero(s.layout.size());
@@ -640,25 +670,25 @@ void Model::set_free_values(const Eigen::VectorXd& x) {
   const DofLayout& l = layout();
   for (const std::string& u : unknown_names_) {
     const auto global = l.global_indices(l.field_index(u));
-    Eigen::VectorXd& values = field(u).values;
+    Field& f = field(u);
+    f.version = ++clock_;
     for (int d = 0; d < int(global.size()); ++d)
-      if (global[d] >= 0) values[d] = x[global[d]];
+      if (global[d] >= 0) f.values[d] = x[global[d]];
   }
 }
 
 void Model::add_to_free_values(const Eigen::VectorXd& step) {
   const DofLayout& l = layout();
-  for (const std::string& u : unknown_names_) l.add_from_global(l.field_index(u), step, field(u).values);
+  for (const std::string& u : unknown_names_) {
+    Field& f = field(u);
+    f.version = ++clock_;
+    l.add_from_global(l.field_index(u), step, f.values);
+  }
 }
 
 const CsrMatrix& Model::linear_jacobian() {
   System& s = system();
   require(s.linear_sum > 0, "Model: linear_jacobian() before assemble(true)");
-  if (s.linear_matrix_sum != s.linear_sum) {
-    s.linear_matrix = s.matrix->matrix();
-    std::copy(s.linear_values.begin(), s.linear_values.end(), s.linear_matrix.valuePtr());
-    s.linear_matrix_sum = s.linear_sum;
-  }
   return s.linear_matrix;
 }
 

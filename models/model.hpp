@@ -101,6 +101,11 @@ class Model : public DataView, public NonlinearProblem {
   void assemble(bool tangent) override;
   const Eigen::VectorXd& residual() const override { return residual_; }
   const CsrMatrix& jacobian() const override;
+  // The Jacobian's share of assembly: the linear bricks' tangent element loops (once per change of their
+  // data, in whichever assemble() needs them first: their residual is a mat-vec with them), their sum with
+  // the scheme's factors and its copy into the Jacobian, and the nonlinear blocks added to it. The
+  // nonlinear bricks' element loops compute residual and tangent in one pass and count as the residual's.
+  double jacobian_assembly_seconds() const override { return jacobian_seconds_; }
   // The sum of the linear bricks' blocks with the current factors (the Jacobian without the nonlinear
   // bricks), with the Jacobian's pattern; its version changes only when that sum was recomputed (a new
   // step size, a changed datum), so a factorisation of it can be kept across Newton iterations and steps.
@@ -151,6 +156,8 @@ class Model : public DataView, public NonlinearProblem {
   void refresh_linear_sum(System& s);
 
   std::shared_ptr<const Mesh> mesh_;
+  // The geometry and block patterns the bricks' terms share (one copy for all body terms).
+  std::unique_ptr<TermAssemblyCache> assembly_cache_;
   std::map<std::string, std::unique_ptr<Field>> fields_;
   std::vector<std::string> unknown_names_;
   std::map<std::string, std::pair<Eigen::MatrixXd, std::uint64_t>> constants_;
@@ -169,6 +176,7 @@ class Model : public DataView, public NonlinearProblem {
   std::uint64_t linear_version_ = 1;  // changes when a linear brick's blocks change
   std::uint64_t linear_sums_ = 0;     // counts recomputations of the linear sum
   double time_ = 0;
+  double jacobian_seconds_ = 0;
   bool finalized_ = false;
 };
 

@@ -24,6 +24,7 @@
 #include "models/scene/interrupts.hpp"
 #include "models/scene/mesh_summary.hpp"
 #include "models/scene/run_manifest.hpp"
+#include "models/scene/run_timing.hpp"
 #include "models/scene/time_estimate.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/initial_potential.hpp"
@@ -235,6 +236,11 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   s.set("newton_iterations_max_per_step", Json(double(r.newton_iterations_max_per_step)));
   s.set("wall_s_total", Json(r.wall_seconds));
   if (!r.linear_strategy.empty()) s.set("linear_strategy", Json(r.linear_strategy));
+  // Where the wall time went (models/scene/run_timing.hpp), and the factorisations it paid for.
+  Json timing = Json::object();
+  for (const RunPhase& phase : run_phases(r)) timing.set(phase.name + "_s", Json(phase.seconds));
+  timing.set("factorizations", Json(double(r.factorizations)));
+  s.set("timing", std::move(timing));
   for (const auto& [name, value] : result_numbers(r)) s.set(name, finite_or_null(value));
   s.set("n_contact_nodes", Json(double(r.n_contact_nodes)));
   s.set("n_slip_nodes", Json(double(r.n_slip_nodes)));
@@ -281,6 +287,8 @@ namespace {
 // The runner's own totals, kept in a checkpoint so that a resumed run's summary counts the whole run.
 void save_totals(const FoundationRunResult& r, double wall_seconds, Checkpoint& c) {
   c.numbers["run:assembly_seconds"] = r.assembly_seconds;
+  c.numbers["run:jacobian_seconds"] = r.jacobian_seconds;
+  c.numbers["run:output_seconds"] = r.output_seconds;
   c.numbers["run:factorize_seconds"] = r.factorize_seconds;
   c.numbers["run:solve_seconds"] = r.solve_seconds;
   c.numbers["run:condensation_seconds"] = r.condensation_seconds;
@@ -290,6 +298,10 @@ void save_totals(const FoundationRunResult& r, double wall_seconds, Checkpoint& 
 
 void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_seconds) {
   r.assembly_seconds = c.number("run:assembly_seconds");
+  // A checkpoint of an earlier version has no Jacobian and output times: its part counts as residual and other.
+  for (auto [name, value] : {std::pair{"run:jacobian_seconds", &r.jacobian_seconds},
+                             std::pair{"run:output_seconds", &r.output_seconds}})
+    *value = c.numbers.count(name) ? c.numbers.at(name) : 0.0;
   r.factorize_seconds = c.number("run:factorize_seconds");
   r.solve_seconds = c.number("run:solve_seconds");
   r.condensation_seconds = c.number("run:condensation_seconds");
@@ -390,10 +402,17 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       std::filesystem::remove(checkpoint_path, error);
     }
   }
+  // Writing results, timed as the run's output phase.
+  auto timed_output = [&](auto&& write) {
+    const auto t = std::chrono::steady_clock::now();
+    write();
+    result.output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   StepperCallbacks callbacks;
   callbacks.on_start = [&](Model& model) { return solve_initial_potential(model, *built.scheme, newton); };
   auto add_phases = [&](const NewtonReport& newton) {
     result.assembly_seconds += newton.assembly_seconds;
+    result.jacobian_seconds += newton.jacobian_seconds;
     result.factorize_seconds += newton.factorize_seconds + newton.analyze_seconds;
     result.solve_seconds += newton.solve_seconds;
     result.condensation_seconds += newton.condensation_seconds;
@@ -439,9 +458,12 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     }
     done = r.state;
     require_finite_state(model, when(r));
-    const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
-    require_finite_rows(when(r) + ": history.csv", history_header, {row});
-    if (history) history->row(row);
+    timed_output([&] {
+      const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
+      require_finite_rows(when(r) + ": history.csv", history_header, {row});
+      if (history) history->row(row);
+    });
+    if (run_options.after_step) run_options.after_step(r);
     // A line every progress_every steps, and at least every progress_seconds: no long silence.
     if (progress && (r.step % scene.output.progress_every == 0 || r.step == 1 || since_last_line() >= progress_seconds)) {
       last_line = std::chrono::steady_clock::now();
@@ -460,24 +482,29 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     if (r.step == 0) add_phases(r.newton);  // the initial potential's solve (empty without a potential)
     require_finite_state(model, when(r));
     if (!series) return;
-    VtuWriter writer(mesh);
-    add_piezo_output(writer, model);
-    writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
-    const std::string bad = writer.non_finite_array();
-    require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
-    series->write(r.step, r.time, writer);
+    timed_output([&] {
+      VtuWriter writer(mesh);
+      add_piezo_output(writer, model);
+      writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
+      const std::string bad = writer.non_finite_array();
+      require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
+      series->write(r.step, r.time, writer);
+    });
   };
   if (!dir.empty())
     callbacks.on_checkpoint = [&](const Model& model, const StepperState& state) {
-      Checkpoint checkpoint;
-      checkpoint.texts["foundation"] = foundation.name;
-      save_model_state(model, *built.scheme, checkpoint);
-      save_stepper_state(state, checkpoint);
-      const double wall = earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      save_totals(result, wall, checkpoint);
-      save_series(*series, checkpoint);
-      write_checkpoint(checkpoint_path, checkpoint);
-      if (run_options.after_checkpoint) run_options.after_checkpoint();
+      timed_output([&] {
+        Checkpoint checkpoint;
+        checkpoint.texts["foundation"] = foundation.name;
+        save_model_state(model, *built.scheme, checkpoint);
+        save_stepper_state(state, checkpoint);
+        const double wall =
+            earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        save_totals(result, wall, checkpoint);  // a resumed run counts this checkpoint's own writing as other
+        save_series(*series, checkpoint);
+        write_checkpoint(checkpoint_path, checkpoint);
+        if (run_options.after_checkpoint) run_options.after_checkpoint();
+      });
     };
 
   // A non-finite state or result stops the run where it first appears, with a message saying where.
@@ -532,7 +559,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   // The final tables hold the final state, unless that is where a non-finite value appeared.
   if (!stopped_in_callback) {
     try {
-      write_final_tables(scene, built, locator, dir, result);
+      timed_output([&] { write_final_tables(scene, built, locator, dir, result); });
     } catch (const Error& e) {
       if (std::string(e.what()).find("not finite") == std::string::npos) throw;
       result.completed = false;

@@ -39,6 +39,8 @@ struct FoundationRunOptions {
   // uninterrupted one would have, to the last digit. Without a checkpoint the run starts from t = 0.
   bool resume = false;
   std::function<void()> after_checkpoint;  // e.g. the manifest's update
+  // Called after each accepted step once its history row is written (studies: the time of each step).
+  std::function<void(const StepRecord&)> after_step;
 };
 
 struct FoundationRunResult {
@@ -53,10 +55,15 @@ struct FoundationRunResult {
   double max_abs_vtau_contact = 0;
   int n_slip_nodes = 0, n_contact_nodes = 0;
   // Time per phase, summed over the Newton solves of the steps and of the initial potential, and the
-  // sparse factorisations done.
-  double assembly_seconds = 0, factorize_seconds = 0, solve_seconds = 0, condensation_seconds = 0;
+  // sparse factorisations done. jacobian_seconds is the Jacobian's part of assembly_seconds (the rest is
+  // the residual's); factorize_seconds includes the symbolic analyses.
+  double assembly_seconds = 0, jacobian_seconds = 0, factorize_seconds = 0, solve_seconds = 0,
+         condensation_seconds = 0;
   int factorizations = 0;
   std::string linear_strategy;  // solver.condensation = "auto": what the cost model chose and why
+  // Writing the results: history rows (probes included), the VTU series, checkpoints and the final tables
+  // (summary.json, written after the wall time is taken, is not in it).
+  double output_seconds = 0;
   std::string message;
 };
 

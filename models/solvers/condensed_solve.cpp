@@ -62,6 +62,7 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
 
   auto t = Clock::now();
   if (method_ == LinearStrategy::Schur && !nonlinear_.empty()) {
+    linear_.reset();  // a factorisation of a linear problem's A (the initial potential's) is not needed again
     if (!schur_) schur_ = std::make_unique<SchurComplement>();
     if (!schur_->is_analyzed_for(A, nonlinear_)) {
       schur_->analyze(A, nonlinear_);

@@ -140,8 +140,10 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   NewtonReport report;
   auto assemble = [&] {
     const auto t = Clock::now();
+    const double jacobian_before = problem.jacobian_assembly_seconds();
     problem.assemble(true);
     report.assembly_seconds += seconds_since(t);
+    report.jacobian_seconds += problem.jacobian_assembly_seconds() - jacobian_before;
   };
   auto finish = [&](NewtonOutcome outcome, std::string message) {
     report.outcome = outcome;

@@ -97,6 +97,9 @@ struct NewtonReport : LinearSolveCost {
   std::vector<std::string> blocks;       // the problem's blocks, in order
   std::vector<NewtonIteration> history;  // history[0] is the initial residual
   double assembly_seconds = 0, total_seconds = 0;
+  // The part of assembly_seconds the problem spent on the Jacobian (NonlinearProblem::jacobian_assembly_seconds);
+  // the rest is the residual's.
+  double jacobian_seconds = 0;
   bool condensed = false;  // whether a condensed or Krylov step was used
   LinearStrategy strategy = LinearStrategy::Full;  // of the last iteration
   int krylov_iterations = 0;                        // GMRES iterations, over the solve

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "assembly/error.hpp"
@@ -104,6 +107,29 @@ TEST(SchurComplement, RefactorizesNewValuesAndRejectsMisuse) {
   EXPECT_LT((schur.schur() - 2.0 * first).norm(), 1e-12 * first.norm());
   EXPECT_THROW(schur.reduce(Eigen::VectorXd::Ones(3)), Error);
   EXPECT_THROW(schur.expand(rhs_for(a), Eigen::VectorXd::Ones(1)), Error);
+}
+
+// The condensation keeps no copy of the matrix: it reads the values while it factorises and solves with
+// the factors alone, so the caller may change or free its matrix afterwards; another pattern is told apart.
+TEST(SchurComplement, SolvesWithTheFactorsAloneAfterTheMatrixIsGone) {
+  const CsrMatrix a = saddle_point(8);
+  const Split s = split(int(a.rows()));
+  const Eigen::VectorXd b = rhs_for(a);
+  SchurComplement schur;
+  {
+    CsrMatrix copy = a;
+    schur.analyze(copy, s.interface);
+    schur.factorize(copy);
+    std::fill_n(copy.valuePtr(), copy.nonZeros(), std::nan(""));  // what MUMPS must not read any more
+  }
+  const Eigen::VectorXd x = schur.expand(b, schur.schur().lu().solve(schur.reduce(b)));
+  EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm());
+  EXPECT_TRUE(schur.is_analyzed_for(a, s.interface));
+  CsrMatrix other = a;
+  other.coeffRef(0, int(a.cols()) - 1) += 1.0;  // a new entry: another pattern
+  other.makeCompressed();
+  EXPECT_FALSE(schur.is_analyzed_for(other, s.interface));
+  EXPECT_THROW(schur.factorize(other), Error);
 }
 
 }  // namespace

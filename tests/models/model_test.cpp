@@ -123,6 +123,61 @@ TEST(Model, CachedAndForcedAssemblyAreIdentical) {
   EXPECT_LT((dense(bulk.model->jacobian()) - cached_jacobian).norm(), 1e-14 * cached_jacobian.norm());
 }
 
+// The Jacobian's share of assembly: the linear bricks' tangents (whichever assembly needs them first, since
+// their residual is a mat-vec with them) and the Jacobian's sum; a later residual alone adds nothing. Newton
+// reports it within its assembly time.
+TEST(Model, CountsTheJacobiansShareOfAssemblyOnlyWhenItIsAssembled) {
+  Bulk bulk;
+  bulk.scheme.begin_step(*bulk.model, 0.01);
+  EXPECT_EQ(bulk.model->jacobian_assembly_seconds(), 0.0);
+  bulk.model->assemble(false);
+  const double tangents = bulk.model->jacobian_assembly_seconds();
+  EXPECT_GT(tangents, 0.0) << "the linear bricks' tangents were assembled";
+  bulk.model->assemble(false);
+  EXPECT_EQ(bulk.model->jacobian_assembly_seconds(), tangents) << "a residual alone is no Jacobian work";
+  bulk.model->assemble(true);
+  const double first = bulk.model->jacobian_assembly_seconds();
+  EXPECT_GT(first, tangents) << "the sum of the Jacobian";
+  bulk.model->assemble(false);
+  EXPECT_EQ(bulk.model->jacobian_assembly_seconds(), first);
+  NewtonSolver newton;
+  const NewtonReport report = newton.solve(*bulk.model);
+  EXPECT_GT(report.jacobian_seconds, 0.0);
+  EXPECT_LE(report.jacobian_seconds, report.assembly_seconds);
+  EXPECT_DOUBLE_EQ(report.jacobian_seconds, bulk.model->jacobian_assembly_seconds() - first);
+}
+
+// An affine field is computed when read after what it reads changed -- its map, its base, a history field --
+// and reads the same bits as the formula factor * base + sum c_i history_i whatever changed them.
+TEST(Model, AnAffineFieldFollowsEveryChangeOfWhatItReads) {
+  Bulk bulk;
+  Model& m = *bulk.model;
+  const int n = m.space("v").num_dofs();
+  auto expected = [&] {
+    Eigen::VectorXd u = m.affine_factor("u") * m.values("v");
+    const double c = m.affine_coefficients("u")[0];
+    if (c != 0) u += c * m.values("u_prev");
+    return u;
+  };
+  auto expect_current = [&](const char* after) { EXPECT_TRUE(m.values("u") == expected()) << "after " << after; };
+  bulk.scheme.begin_step(m, 0.01);
+  m.set_values("v", Eigen::VectorXd::LinSpaced(n, -1.0, 1.0));
+  expect_current("set_values of the base");
+  m.set_values("u_prev", Eigen::VectorXd::LinSpaced(n, 2.0, 3.0));
+  expect_current("set_values of the history");
+  m.set_affine("u", 0.5, {2.0});
+  expect_current("set_affine");
+  m.apply_dirichlet();
+  expect_current("apply_dirichlet");
+  m.assemble(false);
+  m.add_to_free_values(Eigen::VectorXd::Constant(m.layout().size(), 0.25));
+  expect_current("add_to_free_values");
+  m.set_free_values(Eigen::VectorXd::Constant(m.layout().size(), -0.5));
+  expect_current("set_free_values");
+  const Eigen::VectorXd* first = &m.values("u");
+  EXPECT_EQ(&m.values("u"), first) << "an unchanged field is read where it is";
+}
+
 TEST(Model, RejectsBadInputNamingWhatIsWrong) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Triangle));
   auto expect_error = [](auto&& action, const std::string& fragment) {

@@ -1,0 +1,29 @@
+#include "assembly/term_assembly_cache.hpp"
+
+#include "assembly/error.hpp"
+
+namespace pc {
+
+std::shared_ptr<const RegionGeometry> TermAssemblyCache::geometry(const std::string& region, int degree) {
+  auto& slot = geometries_[{region, degree}];
+  if (!slot) slot = std::make_shared<const RegionGeometry>(mesh_, region, degree);
+  return slot;
+}
+
+std::shared_ptr<const BlockPattern> TermAssemblyCache::pattern(const std::shared_ptr<const RegionGeometry>& geometry,
+                                                               const FESpace& test, const FESpace& trial) {
+  require(geometry != nullptr && &geometry->mesh() == &mesh_ && &test.mesh() == &mesh_ && &trial.mesh() == &mesh_,
+          "TermAssemblyCache: a pattern of another mesh");
+  // A geometry that serves as a key is kept, so that its address is never another geometry's.
+  pattern_geometries_.emplace(geometry.get(), geometry);
+  auto& slot = patterns_[{geometry.get(), &test, &trial}];
+  if (!slot) slot = std::make_shared<const BlockPattern>(make_block_pattern(*geometry, test, trial));
+  return slot;
+}
+
+void TermAssemblyCache::forget_patterns() {
+  patterns_.clear();
+  pattern_geometries_.clear();
+}
+
+}  // namespace pc

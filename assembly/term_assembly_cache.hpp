@@ -1,0 +1,42 @@
+#pragma once
+// What the terms bound to one mesh share, computed once (a model's body terms -- elasticity, viscosity,
+// inertia, piezoelectric coupling, permittivity -- all integrate over the body): the geometry of a region at
+// a quadrature degree, and the pattern of a block between two spaces over it. Without it each term kept
+// (and computed) its own copies, the largest part of a model's memory before its factorisation.
+// Entries live as long as the cache; geometries and spaces are told apart by identity.
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "assembly/block_pattern.hpp"
+#include "assembly/mesh.hpp"
+#include "assembly/region_geometry.hpp"
+
+namespace pc {
+
+class TermAssemblyCache {
+ public:
+  explicit TermAssemblyCache(const Mesh& mesh) : mesh_(mesh) {}
+  TermAssemblyCache(const TermAssemblyCache&) = delete;
+  TermAssemblyCache& operator=(const TermAssemblyCache&) = delete;
+
+  const Mesh& mesh() const { return mesh_; }
+  std::shared_ptr<const RegionGeometry> geometry(const std::string& region, int degree);
+  // The spaces must outlive the cache (a model's do: they are its fields').
+  std::shared_ptr<const BlockPattern> pattern(const std::shared_ptr<const RegionGeometry>& geometry,
+                                              const FESpace& test, const FESpace& trial);
+  // Drops the patterns (the terms' blocks have them): once a model's terms are bound they would only
+  // serve a brick rebuilt later, which makes its own again.
+  void forget_patterns();
+
+ private:
+  const Mesh& mesh_;
+  std::map<std::pair<std::string, int>, std::shared_ptr<const RegionGeometry>> geometries_;
+  std::map<std::tuple<const RegionGeometry*, const FESpace*, const FESpace*>, std::shared_ptr<const BlockPattern>>
+      patterns_;
+  std::map<const RegionGeometry*, std::shared_ptr<const RegionGeometry>> pattern_geometries_;  // kept alive: keys
+};
+
+}  // namespace pc

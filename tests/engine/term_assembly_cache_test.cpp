@@ -1,0 +1,100 @@
+// Terms over the same region and spaces share one geometry and one block pattern through a
+// TermAssemblyCache, and assemble exactly what terms with copies of their own assemble (bit for bit): the
+// cache changes where the data lives, not a digit of the results.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "assembly/mesh_generators.hpp"
+#include "assembly/pointwise_term.hpp"
+#include "assembly/term_assembly.hpp"
+#include "assembly/term_assembly_cache.hpp"
+
+namespace pc {
+namespace {
+
+// Two kernels on one scalar field u: a diffusion (gradients) and a cubic reaction (values, a nonlinear
+// tangent), over cells or faces.
+struct Diffusion {
+  double k;
+  template <class S>
+  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+    for (int d = 0; d < in.dim; ++d) out.f1[0][0][d] = k * in.grad[0][0][d];
+  }
+};
+struct Reaction {
+  double c;
+  template <class S>
+  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+    out.f0[0][0] = c * in.value[0][0] * in.value[0][0] * in.value[0][0];
+  }
+};
+
+template <class Kernel>
+std::shared_ptr<const Term> term(Integration integration, Kernel kernel) {
+  const bool gradient = integration == Integration::Cells;  // faces have none
+  return std::make_shared<PointwiseTerm<Kernel>>("test term", integration, std::vector<FieldUse>{{"u", gradient}},
+                                                 std::vector<int>{0}, std::vector<Coupling>{{0, 0}}, kernel);
+}
+
+class TermAssemblyCacheTest : public ::testing::Test {
+ protected:
+  std::shared_ptr<const Mesh> mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
+  FESpace space{mesh, 2, 1};
+  Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(space.num_dofs(), -1.0, 2.0);
+
+  // Residual and tangent values of an assembly at u.
+  static std::pair<Eigen::VectorXd, std::vector<double>> assembled(TermAssembly& a, const Eigen::VectorXd& u) {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(u.size());
+    const Eigen::VectorXd* values[] = {&u};
+    Eigen::VectorXd* residuals[] = {&r};
+    a.assemble(values, 0.0, residuals, true);
+    const CsrMatrix& K = a.block(0);
+    return {r, std::vector<double>(K.valuePtr(), K.valuePtr() + K.nonZeros())};
+  }
+};
+
+TEST_F(TermAssemblyCacheTest, TermsOverOneRegionAndSpaceShareOneGeometryAndPattern) {
+  TermAssemblyCache cache(*mesh);
+  TermAssembly diffusion(term(Integration::Cells, Diffusion{1.5}), "all", {&space}, cache);
+  TermAssembly reaction(term(Integration::Cells, Reaction{0.5}), "all", {&space}, cache);
+  // Both kernels ask for degree 2 * order: one geometry, one pattern, two blocks of values.
+  EXPECT_EQ(&diffusion.geometry(), &reaction.geometry());
+  EXPECT_EQ(cache.geometry("all", 4).get(), &diffusion.geometry());
+  EXPECT_EQ(cache.pattern(cache.geometry("all", 4), space, space).get(),
+            cache.pattern(cache.geometry("all", 4), space, space).get());
+  EXPECT_NE(diffusion.block(0).valuePtr(), reaction.block(0).valuePtr());
+  const auto pattern = cache.pattern(cache.geometry("all", 4), space, space);
+  cache.forget_patterns();  // a pattern asked for again is made again, the same
+  const auto again = cache.pattern(cache.geometry("all", 4), space, space);
+  EXPECT_NE(again.get(), pattern.get());
+  EXPECT_EQ(again->outer, pattern->outer);
+  EXPECT_EQ(again->inner, pattern->inner);
+  TermAssembly bottom(term(Integration::Faces, Reaction{2.0}), "bottom", {&space}, cache);
+  EXPECT_NE(&bottom.geometry(), &diffusion.geometry());
+  EXPECT_EQ(&bottom.geometry().mesh(), mesh.get());
+}
+
+TEST_F(TermAssemblyCacheTest, SharedAndOwnCopiesAssembleTheSameBits) {
+  TermAssemblyCache cache(*mesh);
+  for (const auto& [t, region] : {std::pair{term(Integration::Cells, Diffusion{1.5}), "all"},
+                                  std::pair{term(Integration::Cells, Reaction{0.5}), "all"},
+                                  std::pair{term(Integration::Faces, Reaction{2.0}), "bottom"}}) {
+    TermAssembly shared(t, region, {&space}, cache), own(t, region, {&space});
+    const auto [r_shared, k_shared] = assembled(shared, u);
+    const auto [r_own, k_own] = assembled(own, u);
+    EXPECT_TRUE(r_shared == r_own) << region;
+    EXPECT_EQ(k_shared, k_own) << region;
+    EXPECT_TRUE(same_pattern(shared.block(0), own.block(0))) << region;
+  }
+}
+
+TEST_F(TermAssemblyCacheTest, RefusesAPatternOfAnotherMesh) {
+  TermAssemblyCache cache(*mesh);
+  const auto other = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Triangle));
+  const FESpace other_space(other, 1, 1);
+  EXPECT_THROW(cache.pattern(cache.geometry("all", 2), other_space, other_space), Error);
+}
+
+}  // namespace
+}  // namespace pc
