@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <regex>
 #include <sstream>
@@ -94,6 +95,35 @@ TEST_F(OutputTest, ResultSeriesKeepsAValidCollectionOfExactlyTheWrittenSteps) {
     ++files;
   }
   EXPECT_EQ(files, int(steps.size()) + 1);
+}
+
+TEST_F(OutputTest, ResultSeriesWritesItsFilesInItsFormatAndItsCollectionListsThem) {
+  const Mesh mesh = rectangle_mesh({0, 0}, {1, 1}, 3, 2);
+  std::vector<double> ids(mesh.num_cells());
+  for (size_t c = 0; c < ids.size(); ++c) ids[c] = 0.1 * double(c);
+  VtuWriter writer(mesh);
+  writer.add_cell_data("id", 1, ids);
+  const std::map<VtuFormat, std::string> encoding = {{VtuFormat::Ascii, "ascii"}, {VtuFormat::Base64, "binary"},
+                                                     {VtuFormat::Binary, "appended"}, {VtuFormat::Zlib, "appended"}};
+  for (const auto& [format, array_format] : encoding) {
+    SCOPED_TRACE(to_string(format));
+    const fs::path run = directory_ / to_string(format);
+    ResultSeries series(run.string(), "body", format);
+    series.write(0, 0.0, writer);
+    series.write(7, 0.5, writer);
+    const auto listed = read_pvd(series.pvd_path());
+    ASSERT_EQ(listed.size(), 2u);
+    for (const auto& [time, file] : listed) {
+      ASSERT_TRUE(fs::exists(run / file)) << file;
+      const std::string vtu = read_text(run / file);
+      const testing::DataArray array = testing::find_array(vtu, "CellData", "id");
+      EXPECT_EQ(array.format, array_format) << file;
+      EXPECT_EQ(array.doubles(), ids) << file;
+      EXPECT_EQ(testing::element_attribute(vtu, "VTKFile", "compressor"),
+                format == VtuFormat::Zlib ? "vtkZLibDataCompressor" : "");
+    }
+    EXPECT_EQ(listed[1].second, "body_000007.vtu");
+  }
 }
 
 TEST_F(OutputTest, ResultSeriesRewritingAStepReplacesItsTime) {
