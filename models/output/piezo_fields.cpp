@@ -140,24 +140,29 @@ double von_mises(std::span<const double> s, int dim) {
   return std::sqrt(normal / 2 + 3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
 }
 
-void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoFieldNames& names) {
+void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoFieldNames& names,
+                      const std::function<bool(const std::string&)>& wanted) {
+  const auto want = [&](const std::string& name) { return !wanted || wanted(name); };
   const int dim = model.mesh().dim();
   const int n = voigt_size(dim);
   for (const std::string& name : {names.velocity, names.displacement, names.potential})
-    if (model.has_field(name)) writer.add_point_field(name, model.space(name), model.values(name));
+    if (model.has_field(name) && want(name)) writer.add_point_field(name, model.space(name), model.values(name));
 
-  if (model.has_field(names.displacement)) writer.add_cell_data("strain", n, cell_strain(model, names.displacement));
-  if (model.has_field(names.displacement) || model.has_field(names.velocity)) {
+  const bool mechanical = model.has_field(names.displacement) || model.has_field(names.velocity);
+  if (model.has_field(names.displacement) && want("strain"))
+    writer.add_cell_data("strain", n, cell_strain(model, names.displacement));
+  if (mechanical && (want("stress") || want("von_mises"))) {
     std::vector<double> stress = cell_stress(model, names);
     std::vector<double> equivalent(size_t(model.mesh().num_cells()));
     for (size_t cell = 0; cell < equivalent.size(); ++cell)
       equivalent[cell] = von_mises(std::span<const double>(stress).subspan(cell * n, n), dim);
-    writer.add_cell_data("stress", n, std::move(stress));
-    writer.add_cell_data("von_mises", 1, std::move(equivalent));
+    if (want("stress")) writer.add_cell_data("stress", n, std::move(stress));
+    if (want("von_mises")) writer.add_cell_data("von_mises", 1, std::move(equivalent));
   }
   if (model.has_field(names.potential)) {
-    writer.add_cell_data("electric_field", dim, cell_electric_field(model, names.potential));
-    writer.add_cell_data("electric_displacement", dim, cell_electric_displacement(model, names));
+    if (want("electric_field")) writer.add_cell_data("electric_field", dim, cell_electric_field(model, names.potential));
+    if (want("electric_displacement"))
+      writer.add_cell_data("electric_displacement", dim, cell_electric_displacement(model, names));
   }
 }
 

@@ -7,7 +7,8 @@
 //   grid.csv       x, y, (z,) ux, uy, (uz,) vx, vy, (vz,) phi sampled on the scene's output grid (x fastest,
 //                  then y, then z), final time
 //   final_nodes.csv, final_cells.csv   the final state on the mesh (for the figures, 2D)
-//   <name>.pvd + <name>_<step>.vtu     ParaView time series, every output.vtu_every steps and step 0
+//   <name>.pvd + <name>_<step>.vtu     ParaView time series, every output.vtu_every steps and step 0, in the
+//                  format output.vtu_format, holding the arrays output.vtu_fields names (all by default)
 //   checkpoint.bin  the state to continue from (run --resume), every output.checkpoint_every steps
 // and, when the scene asks for it, OUT/sweep_phi_f.csv: the final displacement against the foundation
 // voltage (conductive foundation), for Figure 5, and OUT/manifest.json (models/scene/run_manifest.hpp).
@@ -56,6 +57,7 @@ struct FoundationRunResult {
   // sparse factorisations done.
   double assembly_seconds = 0, factorize_seconds = 0, solve_seconds = 0, condensation_seconds = 0;
   int factorizations = 0;
+  double vtu_seconds = 0;  // the VTU series: its derived fields and files
   std::string message;
 };
 

@@ -495,6 +495,25 @@ TEST_F(OutputTest, AddPiezoOutputWritesThePresentFields) {
   }
 }
 
+TEST_F(OutputTest, AddPiezoOutputWritesOnlyTheWantedArrays) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2));
+  const auto model = linear_model(mesh, 1, fields_2d(), true);
+  set_constants(*model, material_2d());
+  VtuWriter all(*mesh), some(*mesh);
+  add_piezo_output(all, *model);
+  add_piezo_output(some, *model, {}, [](const std::string& name) { return name == "phi" || name == "von_mises"; });
+  all.write((directory_ / "all.vtu").string());
+  some.write((directory_ / "some.vtu").string());
+  const std::string text = read_text(directory_ / "some.vtu");
+  EXPECT_EQ(testing::array_names(text, "PointData"), std::vector<std::string>{"phi"});
+  EXPECT_EQ(testing::array_names(text, "CellData"), std::vector<std::string>{"von_mises"});
+  // What is written is what a file of every array holds.
+  const std::string every = read_text(directory_ / "all.vtu");
+  EXPECT_EQ(testing::find_array(text, "PointData", "phi").bytes, testing::find_array(every, "PointData", "phi").bytes);
+  EXPECT_EQ(testing::find_array(text, "CellData", "von_mises").bytes,
+            testing::find_array(every, "CellData", "von_mises").bytes);
+}
+
 // ---- boundary tables ----------------------------------------------------------------------------
 
 TEST(BoundaryNodes, BottomNodesAreSortedByXAndCarryTheFieldValues) {
