@@ -512,6 +512,12 @@ TEST_F(OutputTest, AddPiezoOutputWritesOnlyTheWantedArrays) {
   EXPECT_EQ(testing::find_array(text, "PointData", "phi").bytes, testing::find_array(every, "PointData", "phi").bytes);
   EXPECT_EQ(testing::find_array(text, "CellData", "von_mises").bytes,
             testing::find_array(every, "CellData", "von_mises").bytes);
+  // The arrays that share their strains and potential gradient equal the functions that compute them alone.
+  EXPECT_EQ(testing::find_array(every, "CellData", "strain").doubles(), cell_strain(*model, "u"));
+  EXPECT_EQ(testing::find_array(every, "CellData", "stress").doubles(), cell_stress(*model));
+  EXPECT_EQ(testing::find_array(every, "CellData", "electric_field").doubles(), cell_electric_field(*model, "phi"));
+  EXPECT_EQ(testing::find_array(every, "CellData", "electric_displacement").doubles(),
+            cell_electric_displacement(*model));
 }
 
 // ---- boundary tables ----------------------------------------------------------------------------
