@@ -48,10 +48,6 @@ void append_uint64(std::string& bytes, std::uint64_t value) {
   for (int b = 0; b < 8; ++b) bytes.push_back(static_cast<char>((value >> (8 * b)) & 0xff));
 }
 
-void put_uint64(std::string& bytes, size_t at, std::uint64_t value) {
-  for (int b = 0; b < 8; ++b) bytes[at + b] = static_cast<char>((value >> (8 * b)) & 0xff);
-}
-
 std::string base64(std::string_view bytes) {
   static constexpr char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string text;
@@ -84,25 +80,23 @@ std::string ascii(std::span<const Value> values, int components) {
   return text;
 }
 
-// The zlib layout of the header comment, appended to `out`.
-void append_compressed(std::string& out, std::string_view bytes, const std::string& name) {
+// The zlib layout of the header comment: the header into `header`, the compressed blocks into `blocks`.
+void compress(std::string_view bytes, std::string& header, std::string& blocks, const std::string& name) {
   const std::uint64_t size = bytes.size();
-  const std::uint64_t blocks = (size + kBlockBytes - 1) / kBlockBytes;
-  const size_t header = out.size();
-  append_uint64(out, blocks);
-  append_uint64(out, kBlockBytes);
-  append_uint64(out, size % kBlockBytes);
-  out.resize(out.size() + 8 * blocks);  // the compressed sizes, known once each block is compressed
-  for (std::uint64_t b = 0; b < blocks; ++b) {
+  const std::uint64_t count = (size + kBlockBytes - 1) / kBlockBytes;
+  append_uint64(header, count);
+  append_uint64(header, kBlockBytes);
+  append_uint64(header, size % kBlockBytes);
+  for (std::uint64_t b = 0; b < count; ++b) {
     const uLong block_size = uLong(std::min(kBlockBytes, size - b * kBlockBytes));
     uLongf compressed = compressBound(block_size);
-    const size_t at = out.size();
-    out.resize(at + compressed);
-    const int status = compress2(reinterpret_cast<Bytef*>(out.data() + at), &compressed,
+    const size_t at = blocks.size();
+    blocks.resize(at + compressed);
+    const int status = compress2(reinterpret_cast<Bytef*>(blocks.data() + at), &compressed,
                                  reinterpret_cast<const Bytef*>(bytes.data() + b * kBlockBytes), block_size, kZlibLevel);
     require(status == Z_OK, "VtuWriter: zlib could not compress array '", name, "' (zlib status ", status, ")");
-    out.resize(at + compressed);
-    put_uint64(out, header + 24 + 8 * b, compressed);
+    blocks.resize(at + compressed);
+    append_uint64(header, compressed);
   }
 }
 
@@ -134,15 +128,22 @@ void VtuDataArrays::add_values(std::ostream& out, const std::string& name, int c
       return;
     }
     case VtuFormat::Binary:
-    case VtuFormat::Zlib:
-      out << "appended\" offset=\"" << appended_.size() << "\"/>\n";
-      if (format_ == VtuFormat::Binary) {
-        append_uint64(appended_, values.size_bytes());
-        appended_.append(little_endian_bytes(values, scratch));
+    case VtuFormat::Zlib: {
+      out << "appended\" offset=\"" << appended_bytes_ << "\"/>\n";
+      Appended array;
+      const std::string_view bytes = little_endian_bytes(values, scratch);
+      if (format_ == VtuFormat::Zlib) {
+        compress(bytes, array.header, array.kept, name);
       } else {
-        append_compressed(appended_, little_endian_bytes(values, scratch), name);
+        append_uint64(array.header, bytes.size());
+        // The caller's own memory is written as it is; a byte-swapped copy is kept.
+        if (scratch.empty()) array.values = bytes;
+        else array.kept = std::move(scratch);
       }
+      appended_bytes_ += array.header.size() + array.bytes().size();
+      appended_.push_back(std::move(array));
       return;
+    }
   }
 }
 
@@ -162,7 +163,10 @@ void VtuDataArrays::write_appended(std::ostream& out) const {
   if (format_ != VtuFormat::Binary && format_ != VtuFormat::Zlib) return;
   // The data start right after the '_'; offsets count from there.
   out << "  <AppendedData encoding=\"raw\">\n   _";
-  out.write(appended_.data(), std::streamsize(appended_.size()));
+  for (const Appended& array : appended_) {
+    out.write(array.header.data(), std::streamsize(array.header.size()));
+    out.write(array.bytes().data(), std::streamsize(array.bytes().size()));
+  }
   out << "\n  </AppendedData>\n";
 }
 

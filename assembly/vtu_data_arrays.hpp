@@ -14,6 +14,8 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "assembly/vtu_format.hpp"
 
@@ -27,7 +29,8 @@ class VtuDataArrays {
   // zlib, the compressor.
   std::string file_attributes() const;
 
-  // Writes one <DataArray> element; an appended format keeps the values for write_appended().
+  // Writes one <DataArray> element. An appended format writes the values in write_appended(), raw ones
+  // from the caller's memory: the values must outlive that call.
   void add(std::ostream& out, const std::string& name, int components, std::span<const double> values);
   void add(std::ostream& out, const std::string& name, int components, std::span<const std::int64_t> values);
   void add(std::ostream& out, const std::string& name, int components, std::span<const std::uint8_t> values);
@@ -40,8 +43,18 @@ class VtuDataArrays {
   template <class Value>
   void add_values(std::ostream& out, const std::string& name, int components, std::span<const Value> values);
 
+  // An appended array: its header (byte count, or zlib's block header), then its bytes, the caller's
+  // values as they are or what is kept here (compressed, or byte-swapped on a big-endian host).
+  struct Appended {
+    std::string header;
+    std::string kept;
+    std::string_view values;
+    std::string_view bytes() const { return kept.empty() ? values : std::string_view(kept); }
+  };
+
   VtuFormat format_;
-  std::string appended_;  // the appended data, without the leading '_'
+  std::vector<Appended> appended_;
+  std::uint64_t appended_bytes_ = 0;  // so far, without the leading '_': the next array's offset
 };
 
 // Text escaped for an XML attribute value.

@@ -212,11 +212,16 @@ void VtuWriter::write(const std::string& path, VtuFormat format) const {
         << "    <Piece NumberOfPoints=\"" << grid.num_points << "\" NumberOfCells=\"" << mesh_.num_cells()
         << "\">\n";
     out << "      <PointData>\n";
+    // Interpolated values live until the appended data is written.
+    std::vector<std::vector<double>> interpolated;
+    interpolated.reserve(point_data_.size());
     for (const PointArray& a : point_data_) {
-      if (quadratic_points_ && a.at_mesh_nodes)
-        arrays.add(out, a.name, a.components, std::span<const double>(at_quadratic_points(a)));
-      else
+      if (quadratic_points_ && a.at_mesh_nodes) {
+        interpolated.push_back(at_quadratic_points(a));
+        arrays.add(out, a.name, a.components, std::span<const double>(interpolated.back()));
+      } else {
         arrays.add(out, a.name, a.components, std::span<const double>(a.values));
+      }
     }
     out << "      </PointData>\n      <CellData>\n";
     for (const Array& a : cell_data_) arrays.add(out, a.name, a.components, std::span<const double>(a.values));
