@@ -1,77 +1,17 @@
 #include "assembly/vtu_writer.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <limits>
-#include <type_traits>
+#include <span>
 
 #include "assembly/atomic_file.hpp"
 #include "assembly/error.hpp"
+#include "assembly/vtu_data_arrays.hpp"
 
 namespace pc {
 namespace {
-
-// Binary arrays are little-endian whatever the host, so the byte_order attribute is always true.
-void append_little_endian(std::string& bytes, std::uint64_t bits, int size) {
-  for (int b = 0; b < size; ++b) bytes.push_back(static_cast<char>((bits >> (8 * b)) & 0xff));
-}
-
-std::string base64(const std::string& bytes) {
-  static constexpr char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string text;
-  text.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const size_t n = std::min<size_t>(3, bytes.size() - i);
-    std::uint32_t group = 0;
-    for (size_t k = 0; k < 3; ++k)
-      group = (group << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-    for (size_t k = 0; k < 4; ++k) text.push_back(k <= n ? alphabet[(group >> (18 - 6 * k)) & 0x3f] : '=');
-  }
-  return text;
-}
-
-// Payload of an inline "binary" DataArray: a UInt64 byte count followed by the values, encoded as one
-// base64 stream (VTK's reader decodes header and data from a single stream when uncompressed).
-template <class Value>
-std::string encode(const std::vector<Value>& values, int size) {
-  std::string bytes;
-  bytes.reserve(8 + values.size() * size);
-  append_little_endian(bytes, std::uint64_t(values.size()) * size, 8);
-  for (const Value& v : values) {
-    if constexpr (std::is_floating_point_v<Value>)
-      append_little_endian(bytes, std::bit_cast<std::uint64_t>(double(v)), size);
-    else
-      append_little_endian(bytes, static_cast<std::uint64_t>(v), size);
-  }
-  return base64(bytes);
-}
-
-std::string xml_escape(const std::string& text) {
-  std::string escaped;
-  for (char c : text) {
-    switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      case '\'': escaped += "&apos;"; break;
-      default: escaped.push_back(c);
-    }
-  }
-  return escaped;
-}
-
-void write_data_array(std::ostream& out, const char* type, const std::string& name, int components,
-                      const std::string& payload) {
-  out << "        <DataArray type=\"" << type << "\" Name=\"" << xml_escape(name)
-      << "\" NumberOfComponents=\"" << components << "\" format=\"binary\">\n          " << payload
-      << "\n        </DataArray>\n";
-}
 
 std::uint8_t vtk_cell_type(Shape shape) {
   switch (shape) {
@@ -262,30 +202,38 @@ std::string VtuWriter::non_finite_array() const {
   return "";
 }
 
-void VtuWriter::write(const std::string& path) const {
+void VtuWriter::write(const std::string& path, VtuFormat format) const {
   const Grid grid = quadratic_points_ ? quadratic_grid(*quadratic_points_) : linear_grid(mesh_);
   write_atomically(path, "VtuWriter", [&](std::ostream& out) {
+    VtuDataArrays arrays(format);
     out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" "
-           "header_type=\"UInt64\">\n"
+        << "<VTKFile type=\"UnstructuredGrid\" " << arrays.file_attributes() << ">\n"
         << "  <UnstructuredGrid>\n"
         << "    <Piece NumberOfPoints=\"" << grid.num_points << "\" NumberOfCells=\"" << mesh_.num_cells()
         << "\">\n";
     out << "      <PointData>\n";
+    // Interpolated values live until the appended data is written.
+    std::vector<std::vector<double>> interpolated;
+    interpolated.reserve(point_data_.size());
     for (const PointArray& a : point_data_) {
-      const bool interpolate = quadratic_points_ && a.at_mesh_nodes;
-      write_data_array(out, "Float64", a.name, a.components,
-                       interpolate ? encode(at_quadratic_points(a), 8) : encode(a.values, 8));
+      if (quadratic_points_ && a.at_mesh_nodes) {
+        interpolated.push_back(at_quadratic_points(a));
+        arrays.add(out, a.name, a.components, std::span<const double>(interpolated.back()));
+      } else {
+        arrays.add(out, a.name, a.components, std::span<const double>(a.values));
+      }
     }
     out << "      </PointData>\n      <CellData>\n";
-    for (const Array& a : cell_data_) write_data_array(out, "Float64", a.name, a.components, encode(a.values, 8));
+    for (const Array& a : cell_data_) arrays.add(out, a.name, a.components, std::span<const double>(a.values));
     out << "      </CellData>\n      <Points>\n";
-    write_data_array(out, "Float64", "Points", 3, encode(grid.points, 8));
+    arrays.add(out, "Points", 3, std::span<const double>(grid.points));
     out << "      </Points>\n      <Cells>\n";
-    write_data_array(out, "Int64", "connectivity", 1, encode(grid.connectivity, 8));
-    write_data_array(out, "Int64", "offsets", 1, encode(grid.offsets, 8));
-    write_data_array(out, "UInt8", "types", 1, encode(grid.types, 1));
-    out << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+    arrays.add(out, "connectivity", 1, std::span<const std::int64_t>(grid.connectivity));
+    arrays.add(out, "offsets", 1, std::span<const std::int64_t>(grid.offsets));
+    arrays.add(out, "types", 1, std::span<const std::uint8_t>(grid.types));
+    out << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
+    arrays.write_appended(out);
+    out << "</VTKFile>\n";
   });
 }
 

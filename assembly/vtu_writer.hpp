@@ -3,7 +3,8 @@
 // reads as a time series. A file is linear, the mesh's nodes and cells, unless an order-2 field is
 // added: it is then quadratic, its points the order-2 Lagrange nodes of the whole mesh and its cells
 // VTK's quadratic cells, so that a P2/Q2 field is written as its dof values, exactly. Cell data carries
-// one or more values per cell.
+// one or more values per cell. The arrays are written in a VtuFormat (assembly/vtu_format.hpp): text,
+// inline base64, or raw or zlib-compressed appended data.
 #include <memory>
 #include <string>
 #include <utility>
@@ -12,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "assembly/fe_space.hpp"
+#include "assembly/vtu_format.hpp"
 
 namespace pc {
 
@@ -33,7 +35,7 @@ class VtuWriter {
   std::string non_finite_array() const;
 
   // Writes the file (the directory must exist); throws naming the path if it cannot.
-  void write(const std::string& path) const;
+  void write(const std::string& path, VtuFormat format = kDefaultVtuFormat) const;
 
  private:
   struct Array {

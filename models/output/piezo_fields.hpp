@@ -12,6 +12,7 @@
 // in the output: "A" (viscosity, n x n), "B" (elasticity, n x n), "E" (piezoelectric, dim x n) and "beta"
 // (permittivity, dim x dim). A term is there when the model has its field, and its tensor is then
 // required, except A: a model without "A" has no viscosity.
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -48,7 +49,9 @@ double von_mises(std::span<const double> stress, int dim);
 
 // Adds the point fields velocity, displacement and potential (those the model has) and the cell data
 // "strain" (with a displacement), "stress" and "von_mises" (with a displacement or a velocity), and
-// "electric_field" and "electric_displacement" (with a potential).
-void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoFieldNames& names = {});
+// "electric_field" and "electric_displacement" (with a potential); with `wanted`, only the arrays whose
+// name it accepts (an array left out is not computed either).
+void add_piezo_output(VtuWriter& writer, const Model& model, const PiezoFieldNames& names = {},
+                      const std::function<bool(const std::string&)>& wanted = nullptr);
 
 }  // namespace pc

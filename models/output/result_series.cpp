@@ -11,8 +11,8 @@
 
 namespace pc {
 
-ResultSeries::ResultSeries(const std::string& directory, std::string basename)
-    : directory_(directory.empty() ? "." : directory), basename_(std::move(basename)) {
+ResultSeries::ResultSeries(const std::string& directory, std::string basename, VtuFormat format)
+    : directory_(directory.empty() ? "." : directory), basename_(std::move(basename)), format_(format) {
   require(!basename_.empty(), "ResultSeries: empty basename for the files in '", directory_, "'");
   std::error_code error;
   std::filesystem::create_directories(directory_, error);
@@ -40,7 +40,7 @@ std::string ResultSeries::write(int step, double time, const VtuWriter& writer) 
   require(std::isfinite(time), "ResultSeries '", pvd_path(), "': time of step ", step, " is not finite: ", time);
   const std::string file = file_name(step);
   const std::string path = (std::filesystem::path(directory_) / file).string();
-  writer.write(path);
+  writer.write(path, format_);
   steps_[step] = {time, file};
   write_collection();
   return path;

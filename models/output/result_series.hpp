@@ -14,8 +14,8 @@ namespace pc {
 class ResultSeries {
  public:
   // Creates the directory (and its parents) now, so that a bad path fails before the run starts. The
-  // files are <directory>/<basename>_<step, 6 digits>.vtu and <directory>/<basename>.pvd.
-  ResultSeries(const std::string& directory, std::string basename);
+  // files are <directory>/<basename>_<step, 6 digits>.vtu, in the given format, and <directory>/<basename>.pvd.
+  ResultSeries(const std::string& directory, std::string basename, VtuFormat format = kDefaultVtuFormat);
 
   // Writes the step's VTU file, then the collection of every step written so far. Writing a step again
   // (e.g. after a retried step) replaces its file and its time. Returns the path of the VTU file.
@@ -35,6 +35,7 @@ class ResultSeries {
  private:
   std::string directory_;
   std::string basename_;
+  VtuFormat format_;
   std::map<int, std::pair<double, std::string>> steps_;  // step -> (time, file name relative to the .pvd)
 
   std::string file_name(int step) const;

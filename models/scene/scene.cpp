@@ -197,7 +197,41 @@ void require_points_in_mesh(const PointLocator& locator, const Json& at, const s
             x[2], ") is outside the mesh");
 }
 
+// output.vtu_fields: a non-empty list of the arrays the files can hold, each once, the electric ones only
+// for a piezoelectric body.
+std::vector<std::string> read_vtu_fields(const Json& list, bool electric) {
+  std::string known;
+  for (const SceneVtuField& f : scene_vtu_fields()) known += (known.empty() ? "" : ", ") + f.name;
+  std::vector<std::string> names;
+  for (const Json& item : list.as_array()) {
+    const std::string name = item.as_string();
+    const auto field = std::find_if(scene_vtu_fields().begin(), scene_vtu_fields().end(),
+                                    [&](const SceneVtuField& f) { return f.name == name; });
+    require(field != scene_vtu_fields().end(), "scene: '", item.path(), "' = '", name,
+            "' is not a field of the VTU files (known: ", known, ")");
+    require(electric || !field->electric, "scene: '", item.path(), "' = '", name, "': the body is not piezoelectric "
+            "(no material.piezo_E), so its VTU files have no ", name);
+    require(std::find(names.begin(), names.end(), name) == names.end(), "scene: '", item.path(), "' = '", name,
+            "' is listed twice");
+    names.push_back(name);
+  }
+  require(!names.empty(), "scene: '", list.path(), "' is empty: name the fields to write (known: ", known,
+          "), or leave it out to write them all");
+  return names;
+}
+
 }  // namespace
+
+const std::vector<SceneVtuField>& scene_vtu_fields() {
+  static const std::vector<SceneVtuField> fields = {
+      {"v", false}, {"u", false}, {"phi", true}, {"contact_pressure", false}, {"strain", false},
+      {"stress", false}, {"von_mises", false}, {"electric_field", true}, {"electric_displacement", true}};
+  return fields;
+}
+
+bool SceneOutput::writes_vtu_field(const std::string& name) const {
+  return vtu_fields.empty() || std::find(vtu_fields.begin(), vtu_fields.end(), name) != vtu_fields.end();
+}
 
 Scene load_scene(const Json& json, const std::string& directory) {
   Scene scene;
@@ -475,10 +509,13 @@ Scene load_scene(const Json& json, const std::string& directory) {
   problems.check_void([&] {
     const auto o = json.find("output");
     if (!o) return;
-    require_known_keys(*o, {"vtu_every", "progress_every", "probes", "grid", "slip_threshold", "phi_f_sweep",
-                            "sweep_steps", "checkpoint_every"});
+    require_known_keys(*o, {"vtu_every", "vtu_format", "vtu_fields", "progress_every", "probes", "grid",
+                            "slip_threshold", "phi_f_sweep", "sweep_steps", "checkpoint_every"});
     SceneOutput& out = scene.output;
     if (const auto x = o->find("vtu_every")) out.vtu_every = x->as_int_at_least(1);
+    if (const auto x = o->find("vtu_format"))
+      out.vtu_format = vtu_format_from_name(x->as_string(), "scene: '" + x->path() + "'");
+    if (const auto x = o->find("vtu_fields")) out.vtu_fields = read_vtu_fields(*x, electric);
     if (const auto x = o->find("checkpoint_every")) out.checkpoint_every = x->as_int_at_least(0);
     if (const auto x = o->find("progress_every")) out.progress_every = x->as_int_at_least(1);
     if (const auto p = o->find("probes")) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "assembly/vtu_format.hpp"
 #include "models/scene/json.hpp"
 #include "models/solvers/newton.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
@@ -28,8 +29,21 @@ struct SceneGrid {
   std::vector<std::array<double, 3>> points() const;
 };
 
+// An array a scene's VTU files can hold (output.vtu_fields names some of them).
+struct SceneVtuField {
+  std::string name;
+  bool electric;  // only a piezoelectric body has it
+};
+// Every such array, in the order a file holds them: the point data v, u, phi, contact_pressure, then the
+// cell data strain, stress, von_mises, electric_field, electric_displacement.
+const std::vector<SceneVtuField>& scene_vtu_fields();
+
 struct SceneOutput {
   int vtu_every = 10;
+  VtuFormat vtu_format = kDefaultVtuFormat;  // output.vtu_format
+  std::vector<std::string> vtu_fields;       // output.vtu_fields: the arrays the VTU files hold; empty: all
+  // Whether the VTU files hold that array.
+  bool writes_vtu_field(const std::string& name) const;
   int progress_every = 20;
   int checkpoint_every = 10;  // a checkpoint (for --resume) every N steps and at a stop; 0: only at a stop
   std::array<double, 3> corner{}, center{};  // probes of history.csv and summary.json

@@ -292,6 +292,7 @@ void save_totals(const FoundationRunResult& r, double wall_seconds, Checkpoint& 
   c.numbers["run:factorize_seconds"] = r.factorize_seconds;
   c.numbers["run:solve_seconds"] = r.solve_seconds;
   c.numbers["run:condensation_seconds"] = r.condensation_seconds;
+  c.numbers["run:vtu_seconds"] = r.vtu_seconds;
   c.numbers["run:factorizations"] = r.factorizations;
   c.numbers["run:wall_seconds"] = wall_seconds;
 }
@@ -305,6 +306,8 @@ void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_se
   r.factorize_seconds = c.number("run:factorize_seconds");
   r.solve_seconds = c.number("run:solve_seconds");
   r.condensation_seconds = c.number("run:condensation_seconds");
+  // A checkpoint of a build that did not time its VTU output has none.
+  r.vtu_seconds = c.numbers.count("run:vtu_seconds") ? c.number("run:vtu_seconds") : 0.0;
   r.factorizations = int(c.number("run:factorizations"));
   wall_seconds = c.number("run:wall_seconds");
 }
@@ -383,7 +386,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     std::filesystem::create_directories(dir, error);
     require(!error && std::filesystem::is_directory(dir), "cannot create the output directory '", dir, "' (--out): ",
             error ? error.message() : "a file of that name is in the way");
-    series = std::make_unique<ResultSeries>(dir, scene.name);
+    series = std::make_unique<ResultSeries>(dir, scene.name, scene.output.vtu_format);
     if (run_options.resume && std::filesystem::exists(checkpoint_path)) {
       const Checkpoint checkpoint = read_checkpoint(checkpoint_path);
       require(checkpoint.text("foundation") == foundation.name, "--resume: '", checkpoint_path,
@@ -483,12 +486,16 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     require_finite_state(model, when(r));
     if (!series) return;
     timed_output([&] {
+      const auto began = std::chrono::steady_clock::now();
+      const SceneOutput& out = scene.output;
       VtuWriter writer(mesh);
-      add_piezo_output(writer, model);
-      writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
+      add_piezo_output(writer, model, {}, [&](const std::string& name) { return out.writes_vtu_field(name); });
+      if (out.writes_vtu_field("contact_pressure"))
+        writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
       const std::string bad = writer.non_finite_array();
       require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
       series->write(r.step, r.time, writer);
+      result.vtu_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     });
   };
   if (!dir.empty())
@@ -647,9 +654,10 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
                      r.steps, r.message.empty() ? "(no message)" : r.message.c_str());
       }
       if (options.progress)
-        std::printf("  %s: %s in %.2f s, %d Newton iterations (max %d per step); max|ux| = %.4g m, max|uy| = %.4g m%s, "
-                    "phi in [%.4g, %.4g] V%s\n",
-                    f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.newton_iterations_total,
+        std::printf("  %s: %s in %.2f s (VTU output %.2f s), %d Newton iterations (max %d per step); max|ux| = %.4g m, "
+                    "max|uy| = %.4g m%s, phi in [%.4g, %.4g] V%s\n",
+                    f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.vtu_seconds,
+                    r.newton_iterations_total,
                     r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy,
                     r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min, r.phi_max,
                     r.message.empty() ? "" : ("; " + r.message).c_str());

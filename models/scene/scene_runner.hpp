@@ -7,7 +7,8 @@
 //   grid.csv       x, y, (z,) ux, uy, (uz,) vx, vy, (vz,) phi sampled on the scene's output grid (x fastest,
 //                  then y, then z), final time
 //   final_nodes.csv, final_cells.csv   the final state on the mesh (for the figures, 2D)
-//   <name>.pvd + <name>_<step>.vtu     ParaView time series, every output.vtu_every steps and step 0
+//   <name>.pvd + <name>_<step>.vtu     ParaView time series, every output.vtu_every steps and step 0, in the
+//                  format output.vtu_format, holding the arrays output.vtu_fields names (all by default)
 //   checkpoint.bin  the state to continue from (run --resume), every output.checkpoint_every steps
 // and, when the scene asks for it, OUT/sweep_phi_f.csv: the final displacement against the foundation
 // voltage (conductive foundation), for Figure 5, and OUT/manifest.json (models/scene/run_manifest.hpp).
@@ -64,6 +65,7 @@ struct FoundationRunResult {
   // Writing the results: history rows (probes included), the VTU series, checkpoints and the final tables
   // (summary.json, written after the wall time is taken, is not in it).
   double output_seconds = 0;
+  double vtu_seconds = 0;  // the part of output_seconds spent on the VTU series: its derived fields and files
   std::string message;
 };
 

@@ -1,6 +1,6 @@
-// The .vtu files are parsed back (base64 arrays decoded) and compared with the mesh and with the fields'
-// exact values at the nodes, for quadratic cells also with VTK's node order; the .pvd collection is read
-// back as text.
+// The .vtu files are parsed back in every format (tests/support/vtu_reader.hpp: text, base64, raw and
+// zlib appended data) and compared with the mesh and with the fields' exact values at the nodes, for
+// quadratic cells also with VTK's node order; the .pvd collection is read back as text.
 #include "support/error_and_temp_dir.hpp"
 #include "assembly/vtu_writer.hpp"
 
@@ -8,8 +8,11 @@
 #include <unistd.h>
 
 #include <array>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -32,7 +35,7 @@ using testing::read_text;
 
 // The mesh part of a .vtu: piece sizes, points (z = 0 in 2D), connectivity, offsets and cell types.
 void expect_mesh(const std::string& vtu, const Mesh& mesh, int vtk_type) {
-  EXPECT_NE(vtu.find("type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" "
+  EXPECT_NE(vtu.find("type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
                      "header_type=\"UInt64\""),
             std::string::npos);
   EXPECT_NE(vtu.find(message("NumberOfPoints=\"", mesh.num_nodes(), "\" NumberOfCells=\"", mesh.num_cells(),
@@ -83,6 +86,8 @@ void expect_point_values(const std::string& vtu, const Mesh& mesh, const std::st
 using testing::expect_error_containing;
 class VtuWriterTest : public testing::TemporaryDirectoryTest {};
 
+constexpr VtuFormat kFormats[] = {VtuFormat::Ascii, VtuFormat::Base64, VtuFormat::Binary, VtuFormat::Zlib};
+
 const auto linear = [](const double* x, double* out) { out[0] = 1 + 2 * x[0] - 3 * x[1]; };
 const auto linear_vector = [](const double* x, double* out) {
   out[0] = 2 * x[0] + x[1];
@@ -104,19 +109,22 @@ TEST_F(VtuWriterTest, TrianglesWithScalarVectorAndCellData) {
   writer.add_point_field("u", p1_vector, p1_vector.interpolate(linear_vector));
   writer.add_cell_data("cell", 1, cell_ids);
   writer.add_cell_data("pair", 2, pairs);
-  const fs::path path = directory_ / "triangles.vtu";
-  writer.write(path.string());
+  for (const VtuFormat format : kFormats) {
+    SCOPED_TRACE(to_string(format));
+    const fs::path path = directory_ / "triangles.vtu";
+    writer.write(path.string(), format);
 
-  EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
-  const std::string vtu = read_text(path);
-  expect_mesh(vtu, *mesh, 5);
-  expect_point_values(vtu, *mesh, "phi", 1, linear);
-  // A 2D vector is padded with a zero z component.
-  expect_point_values(vtu, *mesh, "u", 3, linear_vector);
-  EXPECT_EQ(find_array(vtu, "CellData", "cell").doubles(), cell_ids);
-  const DataArray pair_array = find_array(vtu, "CellData", "pair");
-  EXPECT_EQ(pair_array.components, 2);
-  EXPECT_EQ(pair_array.doubles(), pairs);
+    EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
+    const std::string vtu = read_text(path);
+    expect_mesh(vtu, *mesh, 5);
+    expect_point_values(vtu, *mesh, "phi", 1, linear);
+    // A 2D vector is padded with a zero z component.
+    expect_point_values(vtu, *mesh, "u", 3, linear_vector);
+    EXPECT_EQ(find_array(vtu, "CellData", "cell").doubles(), cell_ids);
+    const DataArray pair_array = find_array(vtu, "CellData", "pair");
+    EXPECT_EQ(pair_array.components, 2);
+    EXPECT_EQ(pair_array.doubles(), pairs);
+  }
 }
 
 TEST_F(VtuWriterTest, TetrahedraWithVectorField) {
@@ -129,12 +137,15 @@ TEST_F(VtuWriterTest, TetrahedraWithVectorField) {
   };
   VtuWriter writer(*mesh);
   writer.add_point_field("displacement", p1, p1.interpolate(f));
-  const fs::path path = directory_ / "tets.vtu";
-  writer.write(path.string());
+  for (const VtuFormat format : kFormats) {
+    SCOPED_TRACE(to_string(format));
+    const fs::path path = directory_ / "tets.vtu";
+    writer.write(path.string(), format);
 
-  const std::string vtu = read_text(path);
-  expect_mesh(vtu, *mesh, 10);
-  expect_point_values(vtu, *mesh, "displacement", 3, f);
+    const std::string vtu = read_text(path);
+    expect_mesh(vtu, *mesh, 10);
+    expect_point_values(vtu, *mesh, "displacement", 3, f);
+  }
 }
 
 TEST_F(VtuWriterTest, HexahedraWithScalarAndPointData) {
@@ -146,13 +157,16 @@ TEST_F(VtuWriterTest, HexahedraWithScalarAndPointData) {
   VtuWriter writer(*mesh);
   writer.add_point_field("T", q1, q1.interpolate(f));
   writer.add_point_data("node", 1, node_ids);
-  const fs::path path = directory_ / "hexes.vtu";
-  writer.write(path.string());
+  for (const VtuFormat format : kFormats) {
+    SCOPED_TRACE(to_string(format));
+    const fs::path path = directory_ / "hexes.vtu";
+    writer.write(path.string(), format);
 
-  const std::string vtu = read_text(path);
-  expect_mesh(vtu, *mesh, 12);
-  expect_point_values(vtu, *mesh, "T", 1, f);
-  EXPECT_EQ(find_array(vtu, "PointData", "node").doubles(), node_ids);
+    const std::string vtu = read_text(path);
+    expect_mesh(vtu, *mesh, 12);
+    expect_point_values(vtu, *mesh, "T", 1, f);
+    EXPECT_EQ(find_array(vtu, "PointData", "node").doubles(), node_ids);
+  }
 }
 
 TEST_F(VtuWriterTest, NodesOutsideTheSpaceRegionGetZero) {
@@ -291,65 +305,67 @@ void expect_values_at_points(const std::string& vtu, const std::string& name, in
 
 TEST_F(VtuWriterTest, QuadraticFieldsAreWrittenAtTheirDofsAsQuadraticCellsOnEveryShape) {
   for (const VtkQuadraticCell& cell : vtk_quadratic_cells()) {
-    SCOPED_TRACE(to_string(cell.shape));
-    const auto mesh = distorted_mesh(cell.shape);
-    const int dim = mesh->dim();
-    const FESpace scalars(mesh, 2, 1), vectors(mesh, 2, dim);
-    const auto f = dim == 2 ? std::function<void(const double*, double*)>(quadratic) : quadratic_3d;
-    // The vector field's interpolant sees dim coordinates: give it a zero z in 2D.
-    const auto g = [&](const double* x, double* out) {
-      const double p[3] = {x[0], x[1], dim == 3 ? x[2] : 0.0};
-      double all[3];
-      quadratic_vector(p, all);
-      for (int k = 0; k < dim; ++k) out[k] = all[k];
-    };
-    VtuWriter writer(*mesh);
-    writer.add_point_field("f", scalars, scalars.interpolate(f));
-    writer.add_point_field("g", vectors, vectors.interpolate(g));
-    const fs::path path = directory_ / "quadratic.vtu";
-    writer.write(path.string());
-    const std::string vtu = read_text(path);
+    for (const VtuFormat format : kFormats) {
+      SCOPED_TRACE(to_string(cell.shape) + ", " + to_string(format));
+      const auto mesh = distorted_mesh(cell.shape);
+      const int dim = mesh->dim();
+      const FESpace scalars(mesh, 2, 1), vectors(mesh, 2, dim);
+      const auto f = dim == 2 ? std::function<void(const double*, double*)>(quadratic) : quadratic_3d;
+      // The vector field's interpolant sees dim coordinates: give it a zero z in 2D.
+      const auto g = [&](const double* x, double* out) {
+        const double p[3] = {x[0], x[1], dim == 3 ? x[2] : 0.0};
+        double all[3];
+        quadratic_vector(p, all);
+        for (int k = 0; k < dim; ++k) out[k] = all[k];
+      };
+      VtuWriter writer(*mesh);
+      writer.add_point_field("f", scalars, scalars.interpolate(f));
+      writer.add_point_field("g", vectors, vectors.interpolate(g));
+      const fs::path path = directory_ / "quadratic.vtu";
+      writer.write(path.string(), format);
+      const std::string vtu = read_text(path);
 
-    // One point per P2/Q2 dof, each cell a VTK quadratic cell.
-    EXPECT_NE(vtu.find(message("NumberOfPoints=\"", scalars.num_scalar_dofs(), "\" NumberOfCells=\"",
-                               mesh->num_cells(), "\"")),
-              std::string::npos);
-    const auto points = read_points(vtu);
-    ASSERT_EQ(points.size(), size_t(scalars.num_scalar_dofs()));
-    const DataArray types = find_array(vtu, "Cells", "types");
-    ASSERT_EQ(types.bytes.size(), size_t(mesh->num_cells()));
-    for (char t : types.bytes) EXPECT_EQ(static_cast<unsigned char>(t), cell.type);
-    const int per_cell = num_vertices(cell.shape) + int(cell.means.size());
-    const auto ends = find_array(vtu, "Cells", "offsets").int64s();
-    ASSERT_EQ(ends.size(), size_t(mesh->num_cells()));
-    for (int c = 0; c < mesh->num_cells(); ++c) EXPECT_EQ(ends[c], std::int64_t(c + 1) * per_cell);
+      // One point per P2/Q2 dof, each cell a VTK quadratic cell.
+      EXPECT_NE(vtu.find(message("NumberOfPoints=\"", scalars.num_scalar_dofs(), "\" NumberOfCells=\"",
+                                 mesh->num_cells(), "\"")),
+                std::string::npos);
+      const auto points = read_points(vtu);
+      ASSERT_EQ(points.size(), size_t(scalars.num_scalar_dofs()));
+      const DataArray types = find_array(vtu, "Cells", "types");
+      ASSERT_EQ(types.bytes.size(), size_t(mesh->num_cells()));
+      for (char t : types.bytes) EXPECT_EQ(static_cast<unsigned char>(t), cell.type);
+      const int per_cell = num_vertices(cell.shape) + int(cell.means.size());
+      const auto ends = find_array(vtu, "Cells", "offsets").int64s();
+      ASSERT_EQ(ends.size(), size_t(mesh->num_cells()));
+      for (int c = 0; c < mesh->num_cells(); ++c) EXPECT_EQ(ends[c], std::int64_t(c + 1) * per_cell);
 
-    // In VTK's order, a cell's nodes are its vertices, then the means of its vertices that VTK names.
-    const auto connectivity = find_array(vtu, "Cells", "connectivity").int64s();
-    ASSERT_EQ(connectivity.size(), size_t(mesh->num_cells()) * per_cell);
-    for (int c = 0; c < mesh->num_cells(); ++c) {
-      std::vector<std::array<double, 3>> corners;
-      for (int n : mesh->cell(c)) {
-        std::array<double, 3> x{0, 0, 0};
-        for (int d = 0; d < dim; ++d) x[d] = mesh->node(n)[d];
-        corners.push_back(x);
+      // In VTK's order, a cell's nodes are its vertices, then the means of its vertices that VTK names.
+      const auto connectivity = find_array(vtu, "Cells", "connectivity").int64s();
+      ASSERT_EQ(connectivity.size(), size_t(mesh->num_cells()) * per_cell);
+      for (int c = 0; c < mesh->num_cells(); ++c) {
+        std::vector<std::array<double, 3>> corners;
+        for (int n : mesh->cell(c)) {
+          std::array<double, 3> x{0, 0, 0};
+          for (int d = 0; d < dim; ++d) x[d] = mesh->node(n)[d];
+          corners.push_back(x);
+        }
+        const auto expected = vtk_nodes(cell, corners);
+        for (int i = 0; i < per_cell; ++i) {
+          const std::int64_t p = connectivity[size_t(c) * per_cell + i];
+          ASSERT_GE(p, 0);
+          ASSERT_LT(p, std::int64_t(points.size()));
+          for (int d = 0; d < 3; ++d)
+            EXPECT_NEAR(points[p][d], expected[i][d], 1e-14) << "cell " << c << " node " << i << " axis " << d;
+        }
       }
-      const auto expected = vtk_nodes(cell, corners);
-      for (int i = 0; i < per_cell; ++i) {
-        const std::int64_t p = connectivity[size_t(c) * per_cell + i];
-        ASSERT_GE(p, 0);
-        ASSERT_LT(p, std::int64_t(points.size()));
-        for (int d = 0; d < 3; ++d)
-          EXPECT_NEAR(points[p][d], expected[i][d], 1e-14) << "cell " << c << " node " << i << " axis " << d;
-      }
+
+      // A field of the space is its polynomial at every point.
+      expect_values_at_points(vtu, "f", 1, f);
+      expect_values_at_points(vtu, "g", 3, [&](const double* x, double* out) {
+        quadratic_vector(x, out);
+        if (dim == 2) out[2] = 0;  // a 2D vector is padded with a zero z component
+      });
     }
-
-    // A field of the space is its polynomial at every point.
-    expect_values_at_points(vtu, "f", 1, f);
-    expect_values_at_points(vtu, "g", 3, [&](const double* x, double* out) {
-      quadratic_vector(x, out);
-      if (dim == 2) out[2] = 0;  // a 2D vector is padded with a zero z component
-    });
   }
 }
 
@@ -402,6 +418,185 @@ TEST_F(VtuWriterTest, RewritingReplacesTheFile) {
   const std::string vtu = read_text(path);
   EXPECT_EQ(vtu.find("Name=\"a\""), std::string::npos);
   EXPECT_EQ(find_array(vtu, "PointData", "b").doubles(), std::vector<double>(mesh->num_nodes(), 2.0));
+}
+
+// ---- formats ------------------------------------------------------------------------------------
+
+// Values that a careless text or binary encoding would change: signed zero, subnormals, the extremes,
+// and fractions with no short decimal form.
+std::vector<double> awkward_values(size_t count) {
+  const std::vector<double> awkward = {-0.0, 0.1, 1.0 / 3.0, -2.0 / 7.0, 5e-324, -2.2250738585072014e-308,
+                                       1.7976931348623157e308, -1.7976931348623157e308, 3.141592653589793e-300,
+                                       123456789012345678.0, 1e-7, -9.999999999999999e22};
+  std::vector<double> values(count);
+  for (size_t i = 0; i < count; ++i) values[i] = awkward[i % awkward.size()] * (i < awkward.size() ? 1 : 1 + 1e-3 * i);
+  return values;
+}
+
+// Bit for bit, so that -0.0 and 0.0 differ.
+void expect_same_bits(const std::vector<double>& read, const std::vector<double>& written, const std::string& what) {
+  ASSERT_EQ(read.size(), written.size()) << what;
+  for (size_t i = 0; i < read.size(); ++i)
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(read[i]), std::bit_cast<std::uint64_t>(written[i]))
+        << what << "[" << i << "]: read " << read[i] << ", written " << written[i];
+}
+
+TEST_F(VtuWriterTest, EveryFormatReadsBackBitForBitWithItsOwnEncoding) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 4, 3, Shape::Quadrilateral));
+  const std::vector<double> at_nodes = awkward_values(size_t(mesh->num_nodes()) * 3);
+  const std::vector<double> at_cells = awkward_values(size_t(mesh->num_cells()) * 2);
+  VtuWriter writer(*mesh);
+  writer.add_point_data("awkward", 3, at_nodes);
+  writer.add_cell_data("awkward_cells", 2, at_cells);
+  const std::map<VtuFormat, std::string> encoding = {
+      {VtuFormat::Ascii, "ascii"}, {VtuFormat::Base64, "binary"}, {VtuFormat::Binary, "appended"},
+      {VtuFormat::Zlib, "appended"}};
+  for (const VtuFormat format : kFormats) {
+    SCOPED_TRACE(to_string(format));
+    const fs::path path = directory_ / "awkward.vtu";
+    writer.write(path.string(), format);
+    const std::string vtu = read_text(path);
+
+    const DataArray points = find_array(vtu, "PointData", "awkward");
+    EXPECT_EQ(points.components, 3);
+    expect_same_bits(points.doubles(), at_nodes, "point data");
+    const DataArray cells = find_array(vtu, "CellData", "awkward_cells");
+    EXPECT_EQ(cells.components, 2);
+    expect_same_bits(cells.doubles(), at_cells, "cell data");
+    expect_mesh(vtu, *mesh, 9);
+
+    for (const auto& [section, name] : std::vector<std::pair<std::string, std::string>>{
+             {"PointData", "awkward"}, {"CellData", "awkward_cells"}, {"Points", "Points"},
+             {"Cells", "connectivity"}, {"Cells", "offsets"}, {"Cells", "types"}})
+      EXPECT_EQ(find_array(vtu, section, name).format, encoding.at(format)) << name;
+    const bool appended = format == VtuFormat::Binary || format == VtuFormat::Zlib;
+    EXPECT_EQ(vtu.find("<AppendedData") != std::string::npos, appended);
+    EXPECT_EQ(testing::element_attribute(vtu, "VTKFile", "compressor"),
+              format == VtuFormat::Zlib ? "vtkZLibDataCompressor" : "");
+  }
+}
+
+TEST_F(VtuWriterTest, AsciiAndBinaryFilesHoldTheSameArrays) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 5, 3, Shape::Triangle));
+  FESpace p2(mesh, 2, 2);
+  VtuWriter writer(*mesh);
+  writer.add_point_field("u", p2, p2.interpolate([](const double* x, double* out) {
+    out[0] = std::sin(3 * x[0]) / 7;
+    out[1] = std::exp(x[1]) * 1e-9;
+  }));
+  writer.add_point_data("at_nodes", 1, awkward_values(mesh->num_nodes()));
+  writer.add_cell_data("at_cells", 3, awkward_values(size_t(mesh->num_cells()) * 3));
+  std::map<VtuFormat, std::string> files;
+  for (const VtuFormat format : kFormats) {
+    const fs::path path = directory_ / (to_string(format) + ".vtu");
+    writer.write(path.string(), format);
+    files[format] = read_text(path);
+  }
+  const std::vector<std::pair<std::string, std::vector<std::string>>> sections = {
+      {"PointData", {"u", "at_nodes"}}, {"CellData", {"at_cells"}}, {"Points", {"Points"}},
+      {"Cells", {"connectivity", "offsets", "types"}}};
+  for (const auto& [section, names] : sections) {
+    for (const VtuFormat format : kFormats) EXPECT_EQ(testing::array_names(files[format], section), names);
+    for (const std::string& name : names) {
+      const DataArray ascii = find_array(files[VtuFormat::Ascii], section, name);
+      EXPECT_FALSE(ascii.bytes.empty()) << name;
+      for (const VtuFormat format : {VtuFormat::Base64, VtuFormat::Binary, VtuFormat::Zlib}) {
+        const DataArray other = find_array(files[format], section, name);
+        EXPECT_EQ(other.type, ascii.type) << name << " in " << to_string(format);
+        EXPECT_EQ(other.components, ascii.components) << name << " in " << to_string(format);
+        EXPECT_TRUE(other.bytes == ascii.bytes) << name << ": " << to_string(format) << " differs from ascii";
+      }
+    }
+  }
+  // Raw binary is 8 bytes a value (and the XML); zlib less than raw, ascii more.
+  EXPECT_LT(files[VtuFormat::Zlib].size(), files[VtuFormat::Binary].size());
+  EXPECT_LT(files[VtuFormat::Binary].size(), files[VtuFormat::Base64].size());
+}
+
+TEST_F(VtuWriterTest, RawAppendedArraysFollowOneAnotherWithTheirByteCounts) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 3, 2, Shape::Triangle));
+  VtuWriter writer(*mesh);
+  writer.add_point_data("a", 2, awkward_values(size_t(mesh->num_nodes()) * 2));
+  writer.add_cell_data("b", 1, awkward_values(mesh->num_cells()));
+  const fs::path path = directory_ / "raw.vtu";
+  writer.write(path.string(), VtuFormat::Binary);
+  const std::string vtu = read_text(path);
+
+  // Each array's offset is the previous one's plus its UInt64 count and bytes; the last array ends the data.
+  const std::string xml = testing::xml_part(vtu);
+  const size_t data = vtu.find('_', vtu.find("<AppendedData")) + 1;
+  std::uint64_t expected_offset = 0;
+  const std::vector<std::pair<std::string, std::uint64_t>> in_file_order = {
+      {"a", 16 * mesh->num_nodes()}, {"b", 8 * mesh->num_cells()}, {"Points", 24 * mesh->num_nodes()},
+      {"connectivity", 24 * mesh->num_cells()}, {"offsets", 8 * mesh->num_cells()}, {"types", mesh->num_cells()}};
+  for (const auto& [name, bytes] : in_file_order) {
+    const size_t at = xml.find("Name=\"" + name + "\"");
+    ASSERT_NE(at, std::string::npos) << name;
+    const std::string tag = xml.substr(xml.rfind("<DataArray", at), xml.find('>', at) - xml.rfind("<DataArray", at));
+    EXPECT_EQ(std::stoull(testing::attribute(tag, "offset")), expected_offset) << name;
+    EXPECT_EQ(testing::little_endian(vtu, data + expected_offset, 8), bytes) << name;
+    expected_offset += 8 + bytes;
+  }
+  EXPECT_EQ(vtu.substr(data + expected_offset), "\n  </AppendedData>\n</VTKFile>\n");
+}
+
+TEST_F(VtuWriterTest, ZlibHeaderCountsFullBlocksAndAPartialLastOne) {
+  // 91 x 91 nodes: 8281 doubles = 66248 bytes, 2 blocks of 32 KiB and one of 712 bytes; 8100 cells of
+  // 2 doubles = 129600 bytes, 3 blocks and 31296 bytes; their types, 8100 bytes, one partial block.
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 90, 90, Shape::Quadrilateral));
+  ASSERT_EQ(mesh->num_nodes(), 8281);
+  ASSERT_EQ(mesh->num_cells(), 8100);
+  VtuWriter writer(*mesh);
+  writer.add_point_data("partial", 1, awkward_values(mesh->num_nodes()));
+  writer.add_cell_data("pairs", 2, awkward_values(size_t(mesh->num_cells()) * 2));
+  const fs::path path = directory_ / "blocks.vtu";
+  writer.write(path.string(), VtuFormat::Zlib);
+  const std::string vtu = read_text(path);
+
+  const std::string xml = testing::xml_part(vtu);
+  const size_t data = vtu.find('_', vtu.find("<AppendedData")) + 1;
+  const auto header = [&](const std::string& name, int entry) {
+    const size_t at = xml.find("Name=\"" + name + "\"");
+    const std::string tag = xml.substr(xml.rfind("<DataArray", at), xml.find('>', at) - xml.rfind("<DataArray", at));
+    return testing::little_endian(vtu, data + std::stoull(testing::attribute(tag, "offset")) + 8 * entry, 8);
+  };
+  EXPECT_EQ(header("partial", 0), 3u);
+  EXPECT_EQ(header("partial", 1), 32768u);
+  EXPECT_EQ(header("partial", 2), 712u);
+  EXPECT_EQ(header("pairs", 0), 4u);
+  EXPECT_EQ(header("pairs", 1), 32768u);
+  EXPECT_EQ(header("pairs", 2), 31296u);
+  EXPECT_EQ(header("types", 0), 1u);
+  EXPECT_EQ(header("types", 2), 8100u);
+  expect_same_bits(find_array(vtu, "PointData", "partial").doubles(), awkward_values(mesh->num_nodes()), "partial");
+  expect_same_bits(find_array(vtu, "CellData", "pairs").doubles(), awkward_values(size_t(mesh->num_cells()) * 2),
+                   "pairs");
+}
+
+TEST_F(VtuWriterTest, ZlibHeaderOfAnArrayOfWholeBlocksHasNoPartialBlock) {
+  // 64 x 64 quadrilaterals, 4 components a cell: 4096 x 4 doubles = 131072 bytes = 4 blocks exactly.
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 64, 64, Shape::Quadrilateral));
+  VtuWriter writer(*mesh);
+  const std::vector<double> values = awkward_values(size_t(mesh->num_cells()) * 4);
+  writer.add_cell_data("whole", 4, values);
+  const fs::path path = directory_ / "whole.vtu";
+  writer.write(path.string(), VtuFormat::Zlib);
+  const std::string vtu = read_text(path);
+  const size_t data = vtu.find('_', vtu.find("<AppendedData")) + 1;
+  // The cell data is the first array: offset 0.
+  EXPECT_NE(testing::xml_part(vtu).find("Name=\"whole\" NumberOfComponents=\"4\" format=\"appended\" offset=\"0\""),
+            std::string::npos);
+  EXPECT_EQ(testing::little_endian(vtu, data, 8), 4u);
+  EXPECT_EQ(testing::little_endian(vtu, data + 8, 8), 32768u);
+  EXPECT_EQ(testing::little_endian(vtu, data + 16, 8), 0u);
+  expect_same_bits(find_array(vtu, "CellData", "whole").doubles(), values, "whole");
+}
+
+TEST(VtuFormat, NamesReadBackAndAnUnknownOneIsRefusedNamingItAndTheKnownOnes) {
+  EXPECT_EQ(vtu_format_names(), (std::vector<std::string>{"ascii", "base64", "binary", "zlib"}));
+  for (const VtuFormat format : kFormats) EXPECT_EQ(vtu_format_from_name(to_string(format), "here"), format);
+  expect_error_containing([] { vtu_format_from_name("xml", "scene: 'output.vtu_format'"); },
+                          {"scene: 'output.vtu_format'", "'xml'", "ascii, base64, binary, zlib"});
 }
 
 TEST_F(VtuWriterTest, PvdListsTimesAndFiles) {

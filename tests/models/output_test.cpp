@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <regex>
 #include <sstream>
@@ -94,6 +95,35 @@ TEST_F(OutputTest, ResultSeriesKeepsAValidCollectionOfExactlyTheWrittenSteps) {
     ++files;
   }
   EXPECT_EQ(files, int(steps.size()) + 1);
+}
+
+TEST_F(OutputTest, ResultSeriesWritesItsFilesInItsFormatAndItsCollectionListsThem) {
+  const Mesh mesh = rectangle_mesh({0, 0}, {1, 1}, 3, 2);
+  std::vector<double> ids(mesh.num_cells());
+  for (size_t c = 0; c < ids.size(); ++c) ids[c] = 0.1 * double(c);
+  VtuWriter writer(mesh);
+  writer.add_cell_data("id", 1, ids);
+  const std::map<VtuFormat, std::string> encoding = {{VtuFormat::Ascii, "ascii"}, {VtuFormat::Base64, "binary"},
+                                                     {VtuFormat::Binary, "appended"}, {VtuFormat::Zlib, "appended"}};
+  for (const auto& [format, array_format] : encoding) {
+    SCOPED_TRACE(to_string(format));
+    const fs::path run = directory_ / to_string(format);
+    ResultSeries series(run.string(), "body", format);
+    series.write(0, 0.0, writer);
+    series.write(7, 0.5, writer);
+    const auto listed = read_pvd(series.pvd_path());
+    ASSERT_EQ(listed.size(), 2u);
+    for (const auto& [time, file] : listed) {
+      ASSERT_TRUE(fs::exists(run / file)) << file;
+      const std::string vtu = read_text(run / file);
+      const testing::DataArray array = testing::find_array(vtu, "CellData", "id");
+      EXPECT_EQ(array.format, array_format) << file;
+      EXPECT_EQ(array.doubles(), ids) << file;
+      EXPECT_EQ(testing::element_attribute(vtu, "VTKFile", "compressor"),
+                format == VtuFormat::Zlib ? "vtkZLibDataCompressor" : "");
+    }
+    EXPECT_EQ(listed[1].second, "body_000007.vtu");
+  }
 }
 
 TEST_F(OutputTest, ResultSeriesRewritingAStepReplacesItsTime) {
@@ -463,6 +493,31 @@ TEST_F(OutputTest, AddPiezoOutputWritesThePresentFields) {
     for (const char* name : {"phi", "electric_field", "electric_displacement"})
       EXPECT_FALSE(has_array(text, name)) << name;
   }
+}
+
+TEST_F(OutputTest, AddPiezoOutputWritesOnlyTheWantedArrays) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2));
+  const auto model = linear_model(mesh, 1, fields_2d(), true);
+  set_constants(*model, material_2d());
+  VtuWriter all(*mesh), some(*mesh);
+  add_piezo_output(all, *model);
+  add_piezo_output(some, *model, {}, [](const std::string& name) { return name == "phi" || name == "von_mises"; });
+  all.write((directory_ / "all.vtu").string());
+  some.write((directory_ / "some.vtu").string());
+  const std::string text = read_text(directory_ / "some.vtu");
+  EXPECT_EQ(testing::array_names(text, "PointData"), std::vector<std::string>{"phi"});
+  EXPECT_EQ(testing::array_names(text, "CellData"), std::vector<std::string>{"von_mises"});
+  // What is written is what a file of every array holds.
+  const std::string every = read_text(directory_ / "all.vtu");
+  EXPECT_EQ(testing::find_array(text, "PointData", "phi").bytes, testing::find_array(every, "PointData", "phi").bytes);
+  EXPECT_EQ(testing::find_array(text, "CellData", "von_mises").bytes,
+            testing::find_array(every, "CellData", "von_mises").bytes);
+  // The arrays that share their strains and potential gradient equal the functions that compute them alone.
+  EXPECT_EQ(testing::find_array(every, "CellData", "strain").doubles(), cell_strain(*model, "u"));
+  EXPECT_EQ(testing::find_array(every, "CellData", "stress").doubles(), cell_stress(*model));
+  EXPECT_EQ(testing::find_array(every, "CellData", "electric_field").doubles(), cell_electric_field(*model, "phi"));
+  EXPECT_EQ(testing::find_array(every, "CellData", "electric_displacement").doubles(),
+            cell_electric_displacement(*model));
 }
 
 // ---- boundary tables ----------------------------------------------------------------------------

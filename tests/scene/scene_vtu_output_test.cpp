@@ -1,0 +1,131 @@
+// The VTU keys of a scene: output.vtu_format chooses the files' format and output.vtu_fields their arrays;
+// a bad value of either is refused naming the key and the value, and a run writes what they say.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "models/scene/scene.hpp"
+#include "models/scene/scene_runner.hpp"
+#include "support/error_and_temp_dir.hpp"
+#include "support/test_helpers.hpp"
+#include "support/vtu_reader.hpp"
+
+namespace pc {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::expect_error_containing;
+
+const std::string kScene = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
+const std::string kKnown =
+    "known: v, u, phi, contact_pressure, strain, stress, von_mises, electric_field, electric_displacement";
+
+// The paper scene without its piezoelectric tensors: a purely mechanical body on an insulated foundation.
+Scene mechanical_scene(const std::vector<std::string>& overrides) {
+  Json json = read_json_file(kScene);
+  Json material = Json::object();
+  for (const auto& [key, value] : json.at("material").members())
+    if (key != "piezo_E" && key != "permittivity_beta") material.set(key, value);
+  json.set("material", material);
+  Json foundation = Json::object();
+  foundation.set("insulated", json.at("foundation").at("insulated"));
+  json.set("foundation", foundation);
+  apply_overrides(json, overrides);
+  return load_scene(json, PIEZOCONTACT_SCENES);
+}
+
+TEST(SceneVtuKeys, DefaultsAreTheDefaultFormatAndEveryField) {
+  const Scene scene = load_scene_file(kScene);
+  EXPECT_EQ(scene.output.vtu_format, kDefaultVtuFormat);
+  EXPECT_TRUE(scene.output.vtu_fields.empty());
+  for (const SceneVtuField& f : scene_vtu_fields()) EXPECT_TRUE(scene.output.writes_vtu_field(f.name)) << f.name;
+}
+
+TEST(SceneVtuKeys, EveryFormatIsReadByName) {
+  for (const std::string& name : vtu_format_names())
+    EXPECT_EQ(to_string(load_scene_file(kScene, {"output.vtu_format=" + name}).output.vtu_format), name);
+}
+
+TEST(SceneVtuKeys, FieldsAreReadInTheirOrder) {
+  const Scene scene = load_scene_file(kScene, {"output.vtu_fields=[\"von_mises\", \"u\", \"phi\"]"});
+  EXPECT_EQ(scene.output.vtu_fields, (std::vector<std::string>{"von_mises", "u", "phi"}));
+  EXPECT_TRUE(scene.output.writes_vtu_field("u"));
+  EXPECT_FALSE(scene.output.writes_vtu_field("stress"));
+  EXPECT_EQ(mechanical_scene({"output.vtu_fields=[\"u\", \"stress\"]"}).output.vtu_fields,
+            (std::vector<std::string>{"u", "stress"}));
+}
+
+TEST(SceneVtuKeys, ABadFormatIsRefusedNamingTheKeyAndTheValue) {
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_format=xml"}); },
+                          {"'output.vtu_format'", "unknown VTU format 'xml'", "known: ascii, base64, binary, zlib"});
+  // Names are exact: no case folding.
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_format=ZLIB"}); },
+                          {"'output.vtu_format'", "'ZLIB'"});
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_format=3"}); }, {"'output.vtu_format'", "string"});
+}
+
+TEST(SceneVtuKeys, BadFieldsAreRefusedNamingTheKeyAndTheValue) {
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_fields=[\"u\", \"stres\"]"}); },
+                          {"'output.vtu_fields[1]' = 'stres' is not a field of the VTU files", kKnown});
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_fields=[\"u\", \"v\", \"u\"]"}); },
+                          {"'output.vtu_fields[2]' = 'u' is listed twice"});
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_fields=[]"}); },
+                          {"'output.vtu_fields' is empty", kKnown});
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_fields=u"}); }, {"'output.vtu_fields'", "array"});
+  expect_error_containing([] { load_scene_file(kScene, {"output.vtu_fields=[1]"}); },
+                          {"'output.vtu_fields[0]'", "string"});
+  // A mechanical body has no potential to write.
+  expect_error_containing([] { mechanical_scene({"output.vtu_fields=[\"u\", \"electric_field\"]"}); },
+                          {"'output.vtu_fields[1]' = 'electric_field'", "not piezoelectric"});
+}
+
+class SceneVtuRun : public testing::TemporaryDirectoryTest {};
+
+TEST_F(SceneVtuRun, ARunWritesItsSeriesInTheFormatAndWithTheFieldsTheSceneNames) {
+  for (const std::string& format : vtu_format_names()) {
+    SCOPED_TRACE(format);
+    const fs::path out = directory_ / format;
+    const Scene scene = load_scene_file(
+        kScene, {"mesh.nx=6", "mesh.ny=2", "time.steps=4", "output.vtu_every=2", "output.vtu_format=" + format,
+                 "output.vtu_fields=[\"contact_pressure\", \"phi\", \"von_mises\"]"});
+    SceneRunOptions options;
+    options.output_directory = out.string();
+    options.progress = false;
+    options.only = {"conductive"};
+    options.sweep = false;
+    ASSERT_TRUE(run_scene(scene, options));
+    // The collection lists steps 0, 2 and 4, and each file holds just the named fields.
+    const std::string pvd = testing::read_text(out / "conductive" / "paper2d.pvd");
+    for (const char* step : {"paper2d_000000.vtu", "paper2d_000002.vtu", "paper2d_000004.vtu"}) {
+      EXPECT_NE(pvd.find(std::string("file=\"") + step + "\""), std::string::npos) << step;
+      const std::string vtu = testing::read_text(out / "conductive" / step);
+      EXPECT_EQ(testing::array_names(vtu, "PointData"), (std::vector<std::string>{"phi", "contact_pressure"}));
+      EXPECT_EQ(testing::array_names(vtu, "CellData"), (std::vector<std::string>{"von_mises"}));
+      EXPECT_EQ(testing::find_array(vtu, "PointData", "phi").doubles().size(), size_t(7 * 3)) << step;
+      EXPECT_EQ(testing::find_array(vtu, "CellData", "von_mises").doubles().size(), size_t(6 * 2 * 2)) << step;
+      EXPECT_EQ(testing::element_attribute(vtu, "VTKFile", "compressor"),
+                format == "zlib" ? "vtkZLibDataCompressor" : "");
+    }
+  }
+}
+
+TEST_F(SceneVtuRun, ByDefaultAFileHoldsEveryFieldInTheListedOrder) {
+  const Scene scene = load_scene_file(kScene, {"mesh.nx=6", "mesh.ny=2", "time.steps=2", "output.vtu_every=2"});
+  SceneRunOptions options;
+  options.output_directory = directory_.string();
+  options.progress = false;
+  options.only = {"conductive"};
+  options.sweep = false;
+  ASSERT_TRUE(run_scene(scene, options));
+  const std::string vtu = testing::read_text(directory_ / "conductive" / "paper2d_000002.vtu");
+  std::vector<std::string> written = testing::array_names(vtu, "PointData");
+  for (const std::string& name : testing::array_names(vtu, "CellData")) written.push_back(name);
+  std::vector<std::string> all;
+  for (const SceneVtuField& f : scene_vtu_fields()) all.push_back(f.name);
+  EXPECT_EQ(written, all);
+}
+
+}  // namespace
+}  // namespace pc
