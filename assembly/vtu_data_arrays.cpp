@@ -17,7 +17,7 @@ namespace {
 // VTK's own writer compresses blocks of this size; its readers take any.
 constexpr std::uint64_t kBlockBytes = 32768;
 // zlib's fastest level: on the paper scene's files (240 x 80) it gives 3.79 MB of 6.36 MB where the default
-// level 6 gives 3.73 MB, in half the time or less. The doubles of a solution hardly compress at any level;
+// level 6 gives 3.73 MB, in about half the time. The doubles of a solution hardly compress at any level;
 // what does is their zeros (the z of 2D points and vectors), the connectivity and the offsets.
 constexpr int kZlibLevel = 1;
 
