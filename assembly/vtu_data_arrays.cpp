@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <bit>
 #include <charconv>
-#include <cstring>
 #include <string_view>
 #include <type_traits>
 
@@ -17,7 +16,7 @@ namespace {
 // VTK's own writer compresses blocks of this size; its readers take any.
 constexpr std::uint64_t kBlockBytes = 32768;
 // zlib's fastest level: on the paper scene's files (240 x 80) it gives 3.79 MB of 6.36 MB where the default
-// level 6 gives 3.73 MB, in half the time or less. The doubles of a solution hardly compress at any level;
+// level 6 gives 3.73 MB, in about half the time. The doubles of a solution hardly compress at any level;
 // what does is their zeros (the z of 2D points and vectors), the connectivity and the offsets.
 constexpr int kZlibLevel = 1;
 
@@ -81,7 +80,7 @@ std::string ascii(std::span<const Value> values, int components) {
 }
 
 // The zlib layout of the header comment: the header into `header`, the compressed blocks into `blocks`.
-void compress(std::string_view bytes, std::string& header, std::string& blocks, const std::string& name) {
+void compress_blocks(std::string_view bytes, std::string& header, std::string& blocks, const std::string& name) {
   const std::uint64_t size = bytes.size();
   const std::uint64_t count = (size + kBlockBytes - 1) / kBlockBytes;
   append_uint64(header, count);
@@ -133,7 +132,7 @@ void VtuDataArrays::add_values(std::ostream& out, const std::string& name, int c
       Appended array;
       const std::string_view bytes = little_endian_bytes(values, scratch);
       if (format_ == VtuFormat::Zlib) {
-        compress(bytes, array.header, array.kept, name);
+        compress_blocks(bytes, array.header, array.kept, name);
       } else {
         append_uint64(array.header, bytes.size());
         // The caller's own memory is written as it is; a byte-swapped copy is kept.
