@@ -431,12 +431,19 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   constexpr double progress_seconds = 10;
   auto last_line = std::chrono::steady_clock::now();
   auto since_last_line = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_line).count(); };
+  // What solver.condensation = "auto" chose and why, kept for the summary and printed once per choice.
+  auto note_linear_strategy = [&] {
+    if (result.linear_strategy == newton.strategy_explanation()) return;
+    result.linear_strategy = newton.strategy_explanation();
+    if (progress) std::printf("  [%s] %s\n", foundation.name.c_str(), result.linear_strategy.c_str());
+  };
   if (progress) {
     const TimeEstimate predicted = estimate_run_seconds(dim, result.ndof, steps);
     std::printf("  [%s] %d dofs, %d steps: predicted %s (%s)\n", foundation.name.c_str(), result.ndof, steps,
                 describe_duration(predicted.seconds).c_str(), predicted.basis);
     // Inside a long step, a line per Newton iteration once progress_seconds have passed without one.
     newton.set_iteration_callback([&](const NewtonReport& report) {
+      note_linear_strategy();  // as soon as auto has chosen, not after a long first step
       if (since_last_line() < progress_seconds) return;
       last_line = std::chrono::steady_clock::now();
       std::printf("  [%s] step %d: Newton iteration %d, |R| = %s\n", foundation.name.c_str(), done.steps + 1,
@@ -455,10 +462,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     static_cast<LinearSolveCost&>(cut_back) = r.cut_back_cost;
     cut_back.assembly_seconds = r.cut_back_assembly_seconds;
     add_phases(cut_back);
-    if (result.linear_strategy != newton.strategy_explanation()) {
-      result.linear_strategy = newton.strategy_explanation();
-      if (progress) std::printf("  [%s] %s\n", foundation.name.c_str(), result.linear_strategy.c_str());
-    }
+    note_linear_strategy();
     done = r.state;
     require_finite_state(model, when(r));
     timed_output([&] {

@@ -89,6 +89,9 @@ LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
   chosen_ = costs.choice == LinearStrategy::Schur && condensed_.applies(problem) ? LinearStrategy::Schur
                                                                                  : LinearStrategy::Krylov;
   explanation_ = costs.explanation;
+  if (chosen_ != costs.choice)
+    explanation_ += message(", but ", nonlinear.size(), " contact dofs exceed solver.condensed_max_dofs = ",
+                            options_.condensed_max_dofs, ": krylov");
   return chosen_;
 }
 

@@ -221,6 +221,17 @@ TEST(NonlinearProblem, AutoChoosesByTheCostModelAndSaysWhy) {
   EXPECT_NE(newton.strategy_explanation().find("6 contact dofs of 200"), std::string::npos)
       << newton.strategy_explanation();
   EXPECT_NE(newton.strategy_explanation().find(": schur"), std::string::npos) << newton.strategy_explanation();
+  // Past solver.condensed_max_dofs the dense method is not taken, and the explanation says so.
+  SpringChain capped(n, true, {20, 60, 100, 140, 180, 199});
+  NewtonOptions options;
+  options.condensed_max_dofs = 5;
+  NewtonSolver capped_newton(options);
+  const NewtonReport krylov = capped_newton.solve(capped);
+  ASSERT_TRUE(krylov.converged()) << krylov.message;
+  EXPECT_EQ(krylov.strategy, LinearStrategy::Krylov);
+  EXPECT_NE(capped_newton.strategy_explanation().find("exceed solver.condensed_max_dofs = 5: krylov"),
+            std::string::npos)
+      << capped_newton.strategy_explanation();
   CircleHyperbola everywhere;
   const NewtonReport all = NewtonSolver().solve(everywhere);
   ASSERT_TRUE(all.converged());
