@@ -41,7 +41,7 @@ class LinearSolver {
 };
 
 // The solvers a scene can name (solver.linear), each registered in its own file: "eigen-lu" (Eigen's
-// SparseLU, the reference), "umfpack" (the default), "mumps" (sequential MUMPS), "cholmod" (symmetric
+// SparseLU, the reference), "umfpack", "mumps" (sequential MUMPS, the default of NewtonOptions), "cholmod" (symmetric
 // positive definite matrices only).
 using LinearSolverFactory = std::unique_ptr<LinearSolver> (*)();
 Registry<LinearSolverFactory>& linear_solver_registry();

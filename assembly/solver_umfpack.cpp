@@ -92,4 +92,4 @@ std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<Um
 
 }  // namespace pc
 
-PC_REGISTER(pc::linear_solver_registry(), {"umfpack", "SuiteSparse UMFPACK with AMD ordering (the default for full factorisations)", {}, pc::make_umfpack_solver})
+PC_REGISTER(pc::linear_solver_registry(), {"umfpack", "SuiteSparse UMFPACK with AMD ordering", {}, pc::make_umfpack_solver})

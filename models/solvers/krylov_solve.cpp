@@ -10,8 +10,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// GMRES gives up (and J is factorised at once) after this many iterations at least, and after as many as a
-// factorisation costs at most, however cheap a solve is against it.
+// GMRES gives up (and J is factorised at once) after this many iterations at least, and at most, however
+// cheap a solve is against a factorisation.
 constexpr int kMinIterations = 4, kMaxIterations = 200;
 // After n failures of GMRES in a row, 2^n - 1 direct steps (at most 2^kMaxBackoffExponent - 1) before the next try.
 constexpr int kMaxBackoffExponent = 5;
@@ -59,8 +59,9 @@ KrylovStep KrylovSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b
     result.dx = direct_step(J, b, result.cost);
     return result;
   }
-  // A factorisation's worth of iterations, within [kMinIterations, kMaxIterations].
-  const double affordable = iteration_seconds_ > 0 ? factorize_seconds_ / iteration_seconds_ : kMaxIterations;
+  // Half a factorisation's worth of iterations, within [kMinIterations, kMaxIterations]: a failure then
+  // costs at most 1.5 factorisations.
+  const double affordable = iteration_seconds_ > 0 ? 0.5 * factorize_seconds_ / iteration_seconds_ : kMaxIterations;
   GmresOptions options;
   options.relative_tolerance = relative_tolerance_;
   options.max_iterations = std::clamp(int(std::ceil(affordable)), kMinIterations, kMaxIterations);
@@ -83,7 +84,8 @@ KrylovStep KrylovSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b
     result.dx = direct_step(J, b, result.cost);
     return result;
   }
-  failures_in_a_row_ = 0;
+  // One success does not make the next likely where GMRES fails often: the back-off shrinks a step at a time.
+  failures_in_a_row_ = std::max(failures_in_a_row_ - 1, 0);
   // The next step renews J_ref when this one's iterations cost more than a factorisation would have.
   renew_ = seconds > factorize_seconds_;
   result.dx = std::move(gmres_result.x);

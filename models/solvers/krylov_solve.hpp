@@ -6,10 +6,10 @@
 // GMRES converges in a few iterations of one solve with the kept factors each. The factorisation is renewed
 //   - when the problem or its linear part A changed (a new step size),
 //   - when the last solve's iterations cost more than a factorisation (the lag no longer pays),
-//   - and at once, with a direct solve, when GMRES does not converge within a factorisation's worth of
-//     iterations; the next 1, 3, 7, ... steps (after 1, 2, 3, ... such failures in a row) are then direct
-//     too: where the contact state changes at every iteration the path is a factorisation per iteration,
-//     plus a small share of lost GMRES work.
+//   - and at once, with a direct solve, when GMRES does not converge within half a factorisation's worth
+//     of iterations; the next 1, 3, 7, ... steps (after 1, 2, 3, ... such failures, each success taking one
+//     back) are then direct too: where the contact state changes at every iteration the path is a
+//     factorisation per iteration, plus a small share of lost GMRES work.
 // Unlike the dense condensations (models/solvers/condensed_solve.hpp) nothing grows with the number of
 // contact dofs m: memory is the factors and the Krylov basis, the work per iteration a few solves, so it is
 // the path for contact sets of thousands to millions of dofs.

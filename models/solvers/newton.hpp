@@ -58,7 +58,7 @@ struct NewtonOptions {
   // The scaled residual growing by this factor over the first one (or over 1, the size of the block's
   // reference, if the first was smaller) means divergence.
   double divergence_factor = 1e12;
-  std::string linear_solver = "umfpack";
+  std::string linear_solver = "mumps";
   // Condensed solve (models/solvers/condensed_solve.hpp): when only a few dofs carry nonlinear terms (the contact
   // boundary), factorise the linear part once per step size and solve each iteration through a small
   // dense system on the active ones, instead of a new factorisation. Used when the nonlinear dofs are at
