@@ -13,7 +13,8 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // GMRES gives up (and J is factorised at once) after this many iterations at least, and at most, however
 // cheap a solve is against a factorisation.
 constexpr int kMinIterations = 4, kMaxIterations = 200;
-// After n failures of GMRES in a row, 2^n - 1 direct steps (at most 2^kMaxBackoffExponent - 1) before the next try.
+// At back-off exponent n (a failure of GMRES adds one, a success takes one away), 2^n - 1 direct steps
+// follow a failure before the next try.
 constexpr int kMaxBackoffExponent = 5;
 
 }  // namespace
@@ -72,20 +73,19 @@ KrylovStep KrylovSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b
   const double seconds = seconds_since(t);
   result.cost.solve_seconds += seconds;
   result.iterations = gmres_result.iterations;
-  total_iterations_ += gmres_result.iterations;
   iteration_seconds_ = seconds / std::max(gmres_result.iterations, 1);
   if (!gmres_result.converged) {
-    // J moved too far from J_ref: the iterations so far are lost, at most a factorisation's worth. While
-    // the contact state keeps moving that fast, GMRES would fail again: the next steps are direct, twice
-    // as many after each failure in a row, so that the path costs little more than a factorisation per
-    // iteration where that is the right answer.
-    failures_in_a_row_ = std::min(failures_in_a_row_ + 1, kMaxBackoffExponent);
-    direct_steps_left_ = (1 << failures_in_a_row_) - 1;
+    // J moved too far from J_ref: the iterations so far are lost, at most half a factorisation's worth.
+    // While the contact state keeps moving that fast, GMRES would fail again: the next steps are direct,
+    // twice as many after each further failure, so that the path costs little more than a factorisation
+    // per iteration where that is the right answer.
+    backoff_exponent_ = std::min(backoff_exponent_ + 1, kMaxBackoffExponent);
+    direct_steps_left_ = (1 << backoff_exponent_) - 1;
     result.dx = direct_step(J, b, result.cost);
     return result;
   }
   // One success does not make the next likely where GMRES fails often: the back-off shrinks a step at a time.
-  failures_in_a_row_ = std::max(failures_in_a_row_ - 1, 0);
+  backoff_exponent_ = std::max(backoff_exponent_ - 1, 0);
   // The next step renews J_ref when this one's iterations cost more than a factorisation would have.
   renew_ = seconds > factorize_seconds_;
   result.dx = std::move(gmres_result.x);

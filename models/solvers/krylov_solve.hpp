@@ -43,8 +43,6 @@ class KrylovSolve {
   // The symbolic analysis of J's pattern (done once per pattern; step() would do it too), and what it
   // predicts of the factors: the cost model's input.
   FactorEstimate analyze(const CsrMatrix& J);
-  // Krylov iterations and factorisations over all steps so far (the report's figures).
-  long total_iterations() const { return total_iterations_; }
 
  private:
   Eigen::VectorXd direct_step(const CsrMatrix& J, const Eigen::VectorXd& b, LinearSolveCost& cost);
@@ -57,8 +55,7 @@ class KrylovSolve {
   bool renew_ = true;
   double factorize_seconds_ = 0;  // the last factorisation's time
   double iteration_seconds_ = 0;  // the last GMRES iteration's (a solve and a product with J)
-  long total_iterations_ = 0;
-  int failures_in_a_row_ = 0;  // of GMRES
+  int backoff_exponent_ = 0;   // +1 per failure of GMRES, -1 per success
   int direct_steps_left_ = 0;  // before GMRES is tried again
 };
 

@@ -59,13 +59,14 @@ struct NewtonOptions {
   // reference, if the first was smaller) means divergence.
   double divergence_factor = 1e12;
   std::string linear_solver = "mumps";
-  // Condensed solve (models/solvers/condensed_solve.hpp): when only a few dofs carry nonlinear terms (the contact
-  // boundary), factorise the linear part once per step size and solve each iteration through a small
-  // dense system on the active ones, instead of a new factorisation. Used when the nonlinear dofs are at
-  // most this fraction of all; 0 disables it.
+  // Condensed and Krylov steps (models/solvers/linear_strategy.hpp): when only a few dofs carry nonlinear
+  // terms (the contact boundary), a kept factorisation serves many iterations instead of a new one each.
+  // Used when the nonlinear dofs are at most this fraction of all; 0 disables them (a full factorisation
+  // per iteration).
   double condensed_max_fraction = 0.25;
-  // ... and at most this many: the dense systems on them cost m^3 (1600: every mesh of the fast-path
-  // study up to 480 x 160 is condensed; a contact face of 2000 nodes is not, and is solved in full).
+  // The dense condensations (schur, columns) only up to this many nonlinear dofs, whose cube their work
+  // grows as (1600: every mesh of the fast-path study up to 480 x 160); past it "auto" takes krylov and a
+  // named dense method a full factorisation per iteration.
   int condensed_max_dofs = 1600;
   // The linear strategy (models/solvers/linear_strategy.hpp): "auto" (by the cost model), "schur" (MUMPS's
   // Schur complement of the interior: one solve's worth of work per iteration), "columns" (any
