@@ -13,6 +13,7 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // GMRES gives up (and J is factorised at once) after this many iterations at least, and at most, however
 // cheap a solve is against a factorisation.
 constexpr int kMinIterations = 4, kMaxIterations = 200;
+constexpr int kMaxBasis = 40;
 // At back-off exponent n (a failure of GMRES adds one, a success takes one away), 2^n - 1 direct steps
 // follow a failure before the next try.
 constexpr int kMaxBackoffExponent = 5;
@@ -66,7 +67,8 @@ KrylovStep KrylovSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b
   GmresOptions options;
   options.relative_tolerance = relative_tolerance_;
   options.max_iterations = std::clamp(int(std::ceil(affordable)), kMinIterations, kMaxIterations);
-  options.restart = options.max_iterations;
+  // The basis holds restart vectors of the problem's size: bounded, so that memory stays O(dofs).
+  options.restart = std::min(options.max_iterations, kMaxBasis);
   const auto t = Clock::now();
   GmresResult gmres_result = gmres([&](const Eigen::VectorXd& x) -> Eigen::VectorXd { return J * x; },
                                    [&](const Eigen::VectorXd& r) { return factors_->solve(r); }, b, options);
