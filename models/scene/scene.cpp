@@ -475,6 +475,9 @@ Scene load_scene(const Json& json, const std::string& directory) {
   });
 
   problems.check_void([&] {
+    // "auto" gives the dense matrices of a Schur condensation at most a quarter of the memory, whether or
+    // not the scene has a solver section.
+    scene.newton.dense_memory_budget_bytes = 0.25 * memory_limit(json).bytes;
     const auto s = json.find("solver");
     if (!s) return;
     require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog",
@@ -484,8 +487,6 @@ Scene load_scene(const Json& json, const std::string& directory) {
     if (const auto x = s->find("condensed_max_dofs")) scene.newton.condensed_max_dofs = x->as_int_at_least(0);
     scene.newton.condensation =
         chosen_entry(*s, "condensation", condensation_registry(), NewtonOptions{}.condensation).name;
-    // "auto" gives the dense matrices of a Schur condensation at most a quarter of the memory.
-    scene.newton.dense_memory_budget_bytes = 0.25 * memory_limit(json).bytes;
     scene.newton.linear_solver =
         chosen_entry(*s, "linear", linear_solver_registry(), NewtonOptions{}.linear_solver).name;
     if (const auto x = s->find("max_iterations")) scene.newton.max_iterations = x->as_int_at_least(1);
