@@ -16,8 +16,9 @@ namespace pc {
 
 // What a symbolic analysis predicts of the factors (a cost model's input): 0 where the back end does not tell.
 struct FactorEstimate {
-  double entries = 0;  // in L and U together
-  double flops = 0;    // of the numeric factorisation
+  double entries = 0;      // read by a forward and backward substitution: L and U, or L twice (LL^T, LDL^T)
+  double flops = 0;        // of the numeric factorisation
+  bool symmetric = false;  // a symmetric factorisation (LL^T, LDL^T), of half the memory of `entries`
 };
 
 class LinearSolver {

@@ -1,5 +1,7 @@
 #include "assembly/mumps_handle.hpp"
 
+#include <cstdint>
+
 #include "assembly/error.hpp"
 
 namespace pc {
@@ -14,8 +16,13 @@ constexpr MUMPS_INT kNumericallySingular = -10;
 
 }  // namespace
 
-MumpsHandle::MumpsHandle(const char* owner) : owner_(owner) {
-  mumps_.sym = 0;  // general unsymmetric matrix: LU
+MumpsHandle::MumpsHandle(const char* owner) : owner_(owner) { start(General); }
+
+MumpsHandle::~MumpsHandle() { stop(); }
+
+void MumpsHandle::start(Symmetry symmetry) {
+  mumps_ = DMUMPS_STRUC_C{};
+  mumps_.sym = symmetry;
   mumps_.par = 1;  // the host process works too
   mumps_.comm_fortran = kUseCommWorld;
   mumps_.job = kInitialize;
@@ -28,34 +35,69 @@ MumpsHandle::MumpsHandle(const char* owner) : owner_(owner) {
   icntl(4) = 0;
 }
 
-MumpsHandle::~MumpsHandle() {
+void MumpsHandle::stop() {
   mumps_.job = kTerminate;
   dmumps_c(&mumps_);
 }
 
-// CSR order is a valid coordinate order, so the values array of the same matrix serves MUMPS as is.
-void MumpsHandle::set_pattern(const CsrMatrix& a) {
-  rows_.resize(a.nonZeros());
-  cols_.resize(a.nonZeros());
+// CSR order is a valid coordinate order, so the values array of the same matrix serves MUMPS as is in
+// General mode.
+void MumpsHandle::set_pattern(const CsrMatrix& a, Symmetry symmetry) {
+  if (symmetry != this->symmetry()) {
+    stop();
+    start(symmetry);
+  }
+  rows_.clear();
+  cols_.clear();
+  lower_slots_.clear();
+  release_values();
   for (int row = 0; row < a.rows(); ++row)
     for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
-      rows_[slot] = row + 1;
-      cols_[slot] = a.innerIndexPtr()[slot] + 1;
+      const int col = a.innerIndexPtr()[slot];
+      if (symmetry == Symmetric && col > row) continue;
+      rows_.push_back(row + 1);
+      cols_.push_back(col + 1);
+      if (symmetry == Symmetric) lower_slots_.push_back(slot);
     }
   mumps_.n = static_cast<MUMPS_INT>(a.rows());
-  mumps_.nnz = a.nonZeros();
+  mumps_.nnz = static_cast<std::int64_t>(rows_.size());
   mumps_.irn = rows_.data();
   mumps_.jcn = cols_.data();
   mumps_.a = nullptr;  // no values: the analysis depends on the pattern only
 }
 
+// For Symmetric, the lower triangle must match and every entry above have its mirror below.
 bool MumpsHandle::has_pattern(const CsrMatrix& a) const {
-  if (!a.isCompressed() || a.rows() != a.cols() || a.rows() != mumps_.n || a.nonZeros() != long(rows_.size()))
-    return false;
+  if (!a.isCompressed() || a.rows() != a.cols() || a.rows() != mumps_.n) return false;
+  size_t entry = 0;
   for (int row = 0; row < a.rows(); ++row)
-    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
-      if (rows_[slot] != row + 1 || cols_[slot] != a.innerIndexPtr()[slot] + 1) return false;
-  return true;
+    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
+      const int col = a.innerIndexPtr()[slot];
+      if (symmetry() == Symmetric && col > row) {
+        if (find_slot(a, col, row) < 0) return false;
+        continue;
+      }
+      if (entry == rows_.size() || rows_[entry] != row + 1 || cols_[entry] != col + 1) return false;
+      ++entry;
+    }
+  return entry == rows_.size();
+}
+
+void MumpsHandle::set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scale) {
+  // MUMPS only reads the values; its C interface is not const-correct.
+  if (symmetry() == General) {
+    mumps_.a = const_cast<double*>(a.valuePtr());
+    return;
+  }
+  scaled_values_.resize(lower_slots_.size());
+  for (size_t entry = 0; entry < lower_slots_.size(); ++entry)
+    scaled_values_[entry] = row_scale[rows_[entry] - 1] * a.valuePtr()[lower_slots_[entry]];
+  mumps_.a = scaled_values_.data();
+}
+
+void MumpsHandle::release_values() {
+  mumps_.a = nullptr;
+  std::vector<double>().swap(scaled_values_);
 }
 
 void MumpsHandle::run(Job job, const char* phase) {

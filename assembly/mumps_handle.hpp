@@ -1,9 +1,12 @@
 #pragma once
-// Internal to the MUMPS back ends (solver_mumps.cpp, schur_complement.cpp): one sequential MUMPS instance
-// in general unsymmetric (LU) mode, silenced (errors become pc::Error naming the phase and INFO), and
-// the matrix pattern handed over as MUMPS's 1-based coordinates.
+// Internal to the MUMPS back ends (solver_mumps.cpp, schur_complement.cpp): one sequential MUMPS instance,
+// silenced (errors become pc::Error naming the phase and INFO), and the matrix handed over as MUMPS's
+// 1-based coordinates: whole, for an LU factorisation, or the lower triangle of a row-scaled matrix that
+// is symmetric (assembly/symmetrizing_scale.hpp), for LDL^T.
+#include <optional>
 #include <vector>
 
+#include <Eigen/Core>
 #include <dmumps_c.h>
 
 #include "assembly/sparse.hpp"
@@ -13,6 +16,8 @@ namespace pc {
 class MumpsHandle {
  public:
   enum Job : MUMPS_INT { Analyze = 1, Factorize = 2, Solve = 3 };
+  // MUMPS's SYM: general (LU) or general symmetric (LDL^T with 2x2 pivots, indefinite matrices allowed).
+  enum Symmetry : MUMPS_INT { General = 0, Symmetric = 2 };
 
   explicit MumpsHandle(const char* owner);
   ~MumpsHandle();
@@ -23,18 +28,32 @@ class MumpsHandle {
   DMUMPS_STRUC_C* operator->() { return &mumps_; }
   MUMPS_INT& icntl(int i) { return mumps_.icntl[i - 1]; }  // 1-based, as in the MUMPS manual
 
-  // Points MUMPS at the pattern of `a` (row and column indices kept here), without values.
-  void set_pattern(const CsrMatrix& a);
+  // Points MUMPS at the pattern of `a` (row and column indices kept here), without values: all of it, or
+  // its lower triangle for Symmetric (the pattern of `a` must then be symmetric). SYM is fixed when a MUMPS
+  // instance starts, so a change of symmetry starts a new one: every ICNTL the owner set is then back at
+  // its default (set them after this call).
+  void set_pattern(const CsrMatrix& a, Symmetry symmetry = General);
+  Symmetry symmetry() const { return Symmetry(mumps_.sym); }
   // Whether `a` has the pattern last given to set_pattern (so that a caller need keep no copy to compare).
   bool has_pattern(const CsrMatrix& a) const;
+  // Points MUMPS at the values of `a` (same pattern as set_pattern's): `a`'s own array in General mode;
+  // for Symmetric, the lower triangle of diag(row_scale) a, copied here until release_values().
+  void set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scale);
+  // Forgets the values (a factorisation reads them; the solves need only the factors).
+  void release_values();
   // Runs a job; throws pc::Error naming the owner and the phase on failure (numerically singular
   // matrices get their own message).
   void run(Job job, const char* phase);
 
  private:
+  void start(Symmetry symmetry);
+  void stop();
+
   const char* owner_;
   DMUMPS_STRUC_C mumps_{};
   std::vector<MUMPS_INT> rows_, cols_;
+  std::vector<int> lower_slots_;  // Symmetric: the slots of `a` in the lower triangle, in MUMPS's order
+  std::vector<double> scaled_values_;
 };
 
 }  // namespace pc

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "assembly/error.hpp"
+#include "assembly/symmetrizing_scale.hpp"
 
 namespace pc {
 void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interface) {
@@ -19,17 +20,22 @@ void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interf
     seen[dof] = 1;
   }
   interface_ = interface;
+  scale_ = symmetrizing_row_scale(a);
   listvar_.resize(interface.size());
   for (size_t k = 0; k < interface.size(); ++k) listvar_[k] = interface[k] + 1;
   const auto m = static_cast<MUMPS_INT>(interface.size());
   schur_.resize(m, m);
-  mumps_.set_pattern(a);
-  mumps_.icntl(19) = 1;  // the Schur complement, whole, on the host
+  mumps_.set_pattern(a, scale_ ? MumpsHandle::Symmetric : MumpsHandle::General);
+  // The Schur complement on the host, by rows (for LDL^T its lower triangle, Fortran's view).
+  mumps_.icntl(19) = 1;
   mumps_->size_schur = m;
   mumps_->listvar_schur = listvar_.data();
   mumps_->schur = schur_.data();
   mumps_->schur_lld = m;
+  // The values too: MUMPS may use them to pair 2x2 pivots (a weighted matching) in the symmetric analysis.
+  mumps_.set_values(a, scale_ ? *scale_ : Eigen::VectorXd());
   mumps_.run(MumpsHandle::Analyze, "analysis");
+  mumps_.release_values();
   analyzed_ = true;
 }
 
@@ -42,20 +48,37 @@ void SchurComplement::factorize(const CsrMatrix& a) {
   require(Eigen::Map<const Eigen::VectorXd>(a.valuePtr(), a.nonZeros()).allFinite(),
           "Schur complement: the matrix contains NaN/Inf");
   factorized_ = false;
-  // MUMPS only reads the values (its C interface is not const-correct), and only here: without iterative
-  // refinement or error analysis (ICNTL(10), ICNTL(11) at their default 0) a solve uses the factors alone.
-  // The pointer is cleared again, so that nothing can read the caller's matrix after it changed.
-  mumps_->a = const_cast<double*>(a.valuePtr());
+  // New values may have lost (or gained) the symmetry the analysis was made for: then it is made anew.
+  std::optional<Eigen::VectorXd> scale = symmetrizing_row_scale(a);
+  if (bool(scale) != bool(scale_)) analyze(a, std::vector<int>(interface_));
+  scale_ = std::move(scale);
+  // MUMPS reads the values only here: without iterative refinement or error analysis (ICNTL(10),
+  // ICNTL(11) at their default 0) a solve uses the factors alone. They are released again, so that nothing
+  // can read the caller's matrix after it changed.
+  mumps_.set_values(a, scale_ ? *scale_ : Eigen::VectorXd());
   mumps_->schur = schur_.data();
-  struct ClearValues {
-    DMUMPS_STRUC_C& mumps;
-    ~ClearValues() { mumps.a = nullptr; }
-  } clear_values{*mumps_};
+  struct ReleaseValues {
+    MumpsHandle& mumps;
+    ~ReleaseValues() { mumps.release_values(); }
+  } release_values{mumps_};
   mumps_.run(MumpsHandle::Factorize, "factorization");
-  // MUMPS returns the unsymmetric Schur complement "by rows" (Fortran's view): column-major storage
-  // thus holds its transpose.
-  schur_.transposeInPlace();
+  if (scale_) {
+    // The Schur complement of diag(s) A is diag(s_c) S, symmetric: MUMPS filled its lower triangle by rows,
+    // the upper triangle of column-major storage.
+    schur_.triangularView<Eigen::StrictlyLower>() = schur_.transpose().triangularView<Eigen::StrictlyLower>();
+    for (size_t k = 0; k < interface_.size(); ++k) schur_.row(k) /= (*scale_)[interface_[k]];
+  } else {
+    // MUMPS returns the unsymmetric Schur complement "by rows" (Fortran's view): column-major storage
+    // thus holds its transpose.
+    schur_.transposeInPlace();
+  }
   factorized_ = true;
+}
+
+// The right-hand side of diag(s) A x = diag(s) b when the factorisation is LDL^T.
+Eigen::VectorXd SchurComplement::scaled(const Eigen::VectorXd& b) const {
+  if (!scale_ || b.size() != scale_->size()) return b;  // a wrong size is solve_phase's to report
+  return scale_->cwiseProduct(b);
 }
 
 // ICNTL(26) = 1: forward substitution, giving the reduced right-hand side in REDRHS; = 2: REDRHS holds
@@ -75,15 +98,17 @@ void SchurComplement::solve_phase(Eigen::VectorXd& rhs, Eigen::VectorXd& reduced
 }
 
 Eigen::VectorXd SchurComplement::reduce(const Eigen::VectorXd& b) {
-  Eigen::VectorXd rhs = b, reduced(interface_.size());
+  Eigen::VectorXd rhs = scaled(b), reduced(interface_.size());
   solve_phase(rhs, reduced, 1);
+  if (scale_)
+    for (size_t k = 0; k < interface_.size(); ++k) reduced[k] /= (*scale_)[interface_[k]];
   return reduced;
 }
 
 Eigen::VectorXd SchurComplement::expand(const Eigen::VectorXd& b, const Eigen::VectorXd& x_interface) {
   require(x_interface.size() == Eigen::Index(interface_.size()), "Schur complement: the interface solution has ",
           x_interface.size(), " entries, not ", interface_.size());
-  Eigen::VectorXd x = b, reduced = x_interface;
+  Eigen::VectorXd x = scaled(b), reduced = x_interface;
   solve_phase(x, reduced, 2);
   for (size_t k = 0; k < interface_.size(); ++k) x[interface_[k]] = x_interface[k];
   return x;

@@ -29,7 +29,7 @@ class CholmodSolver final : public SolverBase {
   }
   std::string name() const override { return "cholmod"; }
   // L alone holds the factor (LL^T): a solve reads it twice, as an LU solve reads L and U.
-  FactorEstimate factor_estimate() const override { return {2 * common_.lnz, common_.fl}; }
+  FactorEstimate factor_estimate() const override { return {2 * common_.lnz, common_.fl, true}; }
 
  private:
   void analyze_pattern() override {

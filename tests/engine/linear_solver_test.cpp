@@ -191,6 +191,41 @@ TEST(LinearSolvers, LuSolversSolveNonsymmetricAndIndefiniteSystemsAndAgree) {
   }
 }
 
+// MUMPS factorises a matrix that a row scaling makes symmetric as LDL^T, any other as LU, deciding on each
+// factorisation's values: both routes give the reference solution, the symmetric one with about half the
+// stored entries (its estimate counts L twice, as a solve reads it), and values that lose their symmetry
+// on the same pattern switch it back to LU.
+TEST(LinearSolvers, MumpsFactorisesRowWeightedSymmetricMatricesAsLdlt) {
+  const CsrMatrix symmetric = row_scaled(saddle_point(20), mixed_weights(saddle_point(20).rows()));
+  const CsrMatrix general = [&] {
+    CsrMatrix changed = symmetric;
+    changed.valuePtr()[1] *= 1.5;  // one entry off: no scaling makes it symmetric
+    return changed;
+  }();
+  const Eigen::VectorXd b = rhs_for(symmetric);
+  const auto mumps = make_linear_solver("mumps");
+  double stored[2] = {0, 0};
+  for (const CsrMatrix* matrix : {&symmetric, &general}) {
+    const bool is_symmetric = matrix == &symmetric;
+    mumps->analyze(*matrix);
+    mumps->factorize(*matrix);
+    const Eigen::VectorXd x = mumps->solve(rhs_for(*matrix));
+    const Eigen::VectorXd reference = make_linear_solver("eigen-lu")->solve_once(*matrix, rhs_for(*matrix));
+    EXPECT_LT((x - reference).norm(), 1e-10 * reference.norm()) << (is_symmetric ? "LDL^T" : "LU");
+    EXPECT_EQ(mumps->factor_estimate().symmetric, is_symmetric);
+    stored[is_symmetric] = mumps->factor_estimate().entries / (is_symmetric ? 2 : 1);
+  }
+  EXPECT_LT(stored[1], 0.7 * stored[0]) << "LDL^T stores " << stored[1] << " entries, LU " << stored[0];
+  // The same pattern refactorised: symmetric values, then nonsymmetric ones, each solved right.
+  const auto refactorised = make_linear_solver("mumps");
+  refactorised->analyze(symmetric);
+  for (const CsrMatrix* matrix : {&symmetric, &general, &symmetric}) {
+    refactorised->factorize(*matrix);
+    EXPECT_LT(relative_residual(*matrix, refactorised->solve(b), b), 1e-12);
+    EXPECT_EQ(refactorised->factor_estimate().symmetric, matrix == &symmetric);
+  }
+}
+
 TEST(LinearSolvers, CholmodAgreesWithTheLuSolversOnTheSpdLaplacian) {
   const CsrMatrix matrix = laplacian_2d(30);
   const Eigen::VectorXd b = rhs_for(matrix);

@@ -45,6 +45,34 @@ TEST(SchurComplement, MatchesTheDenseSchurComplementOfANonsymmetricMatrix) {
   EXPECT_GT((expected - expected.transpose()).norm(), 0.1 * expected.norm()) << "the test needs a nonsymmetric S";
 }
 
+// A symmetric indefinite matrix with rows weighted over twelve decades is condensed by LDL^T on the
+// weighted rows: the Schur complement and the solution are those of the matrix as given; values that lose
+// the symmetry on the same pattern are condensed by LU after a new analysis.
+TEST(SchurComplement, CondensesRowWeightedSymmetricMatricesByLdltAndOthersByLu) {
+  const CsrMatrix symmetric = row_scaled(saddle_point(7), mixed_weights(saddle_point(7).rows()));
+  const CsrMatrix general = [&] {
+    CsrMatrix changed = symmetric;
+    changed.valuePtr()[1] *= 1.5;  // one entry off: no scaling makes it symmetric
+    return changed;
+  }();
+  const Split s = split(int(symmetric.rows()));
+  SchurComplement schur;
+  schur.analyze(symmetric, s.interface);
+  for (const CsrMatrix* a : {&symmetric, &general, &symmetric}) {
+    schur.factorize(*a);
+    EXPECT_EQ(schur.symmetric(), a == &symmetric);
+    const Eigen::MatrixXd dense(*a);
+    const Eigen::MatrixXd expected =
+        dense(s.interface, s.interface) -
+        dense(s.interface, s.interior) *
+            Eigen::MatrixXd(dense(s.interior, s.interior)).lu().solve(Eigen::MatrixXd(dense(s.interior, s.interface)));
+    EXPECT_LT((schur.schur() - expected).norm(), 1e-10 * expected.norm());
+    const Eigen::VectorXd b = rhs_for(*a);
+    const Eigen::VectorXd x = schur.expand(b, schur.schur().lu().solve(schur.reduce(b)));
+    EXPECT_LT((*a * x - b).norm(), 1e-10 * b.norm());
+  }
+}
+
 TEST(SchurComplement, ReduceSolveExpandSolvesTheWholeSystemAndItsContactModification) {
   const CsrMatrix a = saddle_point(8);  // indefinite, with a zero diagonal block
   const Split s = split(int(a.rows()));

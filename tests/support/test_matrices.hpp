@@ -50,6 +50,22 @@ inline CsrMatrix saddle_point(int m) {
   return from_triplets(m * m + m, m * m + m, triplets);
 }
 
+// diag(d) A: a symmetric A with its rows weighted, as equations of different units are (for the
+// symmetric factorisations that find the weights back, assembly/symmetrizing_scale.hpp).
+inline CsrMatrix row_scaled(const CsrMatrix& a, const Eigen::VectorXd& d) {
+  CsrMatrix b = a;
+  for (int row = 0; row < b.rows(); ++row)
+    for (int slot = b.outerIndexPtr()[row]; slot < b.outerIndexPtr()[row + 1]; ++slot) b.valuePtr()[slot] *= d[row];
+  return b;
+}
+
+// Row weights of both signs over twelve decades, deterministic.
+inline Eigen::VectorXd mixed_weights(Eigen::Index n) {
+  Eigen::VectorXd d(n);
+  for (Eigen::Index i = 0; i < n; ++i) d[i] = (i % 3 == 1 ? -1.0 : 1.0) * std::pow(10.0, double(i % 13) - 6.0);
+  return d;
+}
+
 inline Eigen::VectorXd rhs_for(const CsrMatrix& matrix) {
   Eigen::VectorXd x(matrix.rows());
   for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<double>(i)) + 0.5;

@@ -1,0 +1,26 @@
+#pragma once
+// A diagonal row scaling that makes a square matrix symmetric, when there is one: s with
+//   s_i A_ij = s_j A_ji   for every entry,
+// so that diag(s) A x = diag(s) b can be solved by a symmetric (LDL^T) factorisation, with half the
+// entries and half the flops of an LU one. The systems of this field are often of that kind without being
+// symmetric as assembled: the Jacobian of the piezoelectric body in (v, phi) is [K C; c C^T -G] with c the
+// time scheme's factor of u in v, symmetric once the Gauss law's rows are divided by c. The scale is found
+// from the matrix alone, so that any model whose operator is self-adjoint up to the weights of its
+// equations gets it, and a nonsymmetric term (a non-associated friction law, a pressure-dependent
+// conductance) makes the test fail and the caller keep LU.
+#include <optional>
+
+#include <Eigen/Core>
+
+#include "assembly/sparse.hpp"
+
+namespace pc {
+
+// The scale, or nullopt when the pattern is not symmetric or some entry pair disagrees by more than
+// `tolerance` times the larger of the two scaled rows' largest entries (so that entries that are sums
+// with cancellation, exact only to round-off of their row, do not fail the test). The scale of each
+// connected component is fixed by its lowest row, whose scale is 1; rows without off-diagonal entries
+// keep 1. Signs may differ from row to row (an indefinite symmetric matrix is fine).
+std::optional<Eigen::VectorXd> symmetrizing_row_scale(const CsrMatrix& a, double tolerance = 1e-12);
+
+}  // namespace pc
