@@ -47,10 +47,22 @@ void MumpsHandle::set_pattern(const CsrMatrix& a, Symmetry symmetry) {
     stop();
     start(symmetry);
   }
+  release_values();
+  // Exactly as many entries as MUMPS is given (no capacity to spare: these are kept with the factors).
+  long entries = a.nonZeros();
+  if (symmetry == Symmetric)
+    for (int row = 0; row < a.rows(); ++row)
+      for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
+        entries -= a.innerIndexPtr()[slot] > row;
   rows_.clear();
   cols_.clear();
   lower_slots_.clear();
-  release_values();
+  rows_.shrink_to_fit();
+  cols_.shrink_to_fit();
+  lower_slots_.shrink_to_fit();
+  rows_.reserve(entries);
+  cols_.reserve(entries);
+  if (symmetry == Symmetric) lower_slots_.reserve(entries);
   for (int row = 0; row < a.rows(); ++row)
     for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
       const int col = a.innerIndexPtr()[slot];

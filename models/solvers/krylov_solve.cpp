@@ -29,6 +29,11 @@ FactorEstimate KrylovSolve::analyze(const CsrMatrix& J) {
   return factors_->factor_estimate();
 }
 
+void KrylovSolve::release() {
+  factors_.reset();
+  renew_ = true;
+}
+
 Eigen::VectorXd KrylovSolve::direct_step(const CsrMatrix& J, const Eigen::VectorXd& b, LinearSolveCost& cost) {
   if (!factors_) factors_ = make_linear_solver(linear_solver_name_);
   auto t = Clock::now();
@@ -53,7 +58,7 @@ KrylovStep KrylovSolve::step(NonlinearProblem& problem, const Eigen::VectorXd& b
   KrylovStep result;
   const CsrMatrix& J = problem.jacobian();
   const std::uint64_t version = problem.linear_jacobian_version();
-  if (renew_ || direct_steps_left_ > 0 || problem_ != &problem || version_ != version ||
+  if (renew_ || !factors_ || direct_steps_left_ > 0 || problem_ != &problem || version_ != version ||
       !factors_->is_analyzed_for(J)) {
     if (direct_steps_left_ > 0) --direct_steps_left_;
     problem_ = &problem;

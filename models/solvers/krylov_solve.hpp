@@ -43,6 +43,9 @@ class KrylovSolve {
   // The symbolic analysis of J's pattern (done once per pattern; step() would do it too), and what it
   // predicts of the factors: the cost model's input.
   FactorEstimate analyze(const CsrMatrix& J);
+  // Frees the factorisation, the analysis and the solver's copy of J (when another strategy was chosen
+  // after analyze() gave its estimate); step() makes them again.
+  void release();
 
  private:
   Eigen::VectorXd direct_step(const CsrMatrix& J, const Eigen::VectorXd& b, LinearSolveCost& cost);

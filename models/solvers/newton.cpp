@@ -89,6 +89,7 @@ LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
   chosen_ = costs.choice == LinearStrategy::Schur && condensed_.applies(problem) ? LinearStrategy::Schur
                                                                                  : LinearStrategy::Krylov;
   explanation_ = costs.explanation;
+  if (chosen_ == LinearStrategy::Schur) krylov_.release();  // its analysis served the estimate only
   if (chosen_ != costs.choice)
     explanation_ += message(", but ", nonlinear.size(), " contact dofs exceed solver.condensed_max_dofs = ",
                             options_.condensed_max_dofs, ": krylov");
