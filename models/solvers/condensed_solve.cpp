@@ -77,6 +77,7 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
     const double smallest = lu.rcond() * S.cwiseAbs().colwise().sum().maxCoeff();
     schur_regular_ = smallest > kMinSchurRelativeSize * largest_entry_in_rows(A, nonlinear_);
     if (schur_regular_) schur_inverse_ = lu.inverse();
+    woodbury_valid_ = false;
     cost.condensation_seconds += seconds_since(t);
   } else {
     // Columns, or a linear model (m = 0): A's own factorisation, kept from step to step.
@@ -95,6 +96,20 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
   version_ = problem.linear_jacobian_version();
 }
 
+Eigen::MatrixXd CondensedSolve::NonlinearPart::on_active() const {
+  std::vector<int> index(active.empty() ? 0 : active.back() + 1, -1);
+  for (size_t q = 0; q < active.size(); ++q) index[active[q]] = int(q);
+  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(Eigen::Index(active.size()), Eigen::Index(active.size()));
+  for (const auto& e : entries) block(index[e.row()], index[e.col()]) = e.value();
+  return block;
+}
+
+Eigen::MatrixXd CondensedSolve::NonlinearPart::whole(int m) const {
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(m, m);
+  for (const auto& e : entries) d(e.row(), e.col()) = e.value();
+  return d;
+}
+
 Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::VectorXd& b, LinearSolveCost& cost) {
   prepare(problem, cost);
   // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
@@ -103,44 +118,51 @@ Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::Ve
   const CsrMatrix& J = problem.jacobian();
   const CsrMatrix& A = problem.linear_jacobian();
   const int m = static_cast<int>(nonlinear_.size());
-  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(m, m);
+  NonlinearPart D;
   std::vector<char> is_active(m, 0);
   for (int i = 0; i < m; ++i) {
     const int row = nonlinear_[i];
     for (int k = J.outerIndexPtr()[row]; k < J.outerIndexPtr()[row + 1]; ++k) {
       const int j = position_[J.innerIndexPtr()[k]];
       if (j < 0) continue;
-      D(i, j) = J.valuePtr()[k] - A.valuePtr()[k];
-      if (D(i, j) != 0) is_active[i] = is_active[j] = 1;
+      const double d = J.valuePtr()[k] - A.valuePtr()[k];
+      if (d == 0) continue;
+      D.entries.emplace_back(i, j, d);
+      is_active[i] = is_active[j] = 1;
     }
   }
-  std::vector<int> active;
   for (int i = 0; i < m; ++i)
-    if (is_active[i]) active.push_back(i);
+    if (is_active[i]) D.active.push_back(i);
   cost.condensation_seconds += seconds_since(t);
-  return method_ == LinearStrategy::Schur && m > 0 ? schur_step(D, active, b, cost) : columns_step(D, active, b, cost);
+  return method_ == LinearStrategy::Schur && m > 0 ? schur_step(D, b, cost) : columns_step(D, b, cost);
 }
 
 // (S_c + D) x_c = r with r = reduce(b), by Woodbury on S_c^-1 over the active dofs I:
 //   x_c = t - S_c^-1[:, I] (1 + D_II S_c^-1[I, I])^-1 D_II t_I,  t = S_c^-1 r,
 // then dx = expand(b, x_c).
-Eigen::VectorXd CondensedSolve::schur_step(const Eigen::MatrixXd& D, const std::vector<int>& active,
-                                           const Eigen::VectorXd& b, LinearSolveCost& cost) {
+Eigen::VectorXd CondensedSolve::schur_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost) {
   auto t = Clock::now();
   const Eigen::VectorXd r = schur_->reduce(b);
   cost.solve_seconds += seconds_since(t);
   t = Clock::now();
   Eigen::VectorXd x_c;
+  const std::vector<int>& active = D.active;
   if (!schur_regular_) {
-    x_c = (schur_->schur() + D).partialPivLu().solve(r);
+    x_c = (schur_->schur() + D.whole(int(nonlinear_.size()))).partialPivLu().solve(r);
+    ++cost.dense_factorizations;
   } else {
     x_c = schur_inverse_ * r;
     if (!active.empty()) {
       const int a = static_cast<int>(active.size());
-      const Eigen::MatrixXd Da = D(active, active);
-      const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + Da * schur_inverse_(active, active))
-                                    .partialPivLu()
-                                    .solve(Da * x_c(active));
+      const Eigen::MatrixXd Da = D.on_active();
+      if (!woodbury_valid_ || active != woodbury_active_ || Da != woodbury_d_) {
+        woodbury_lu_.compute(Eigen::MatrixXd::Identity(a, a) + Da * schur_inverse_(active, active));
+        woodbury_active_ = active;
+        woodbury_d_ = Da;
+        woodbury_valid_ = true;
+        ++cost.dense_factorizations;
+      }
+      const Eigen::VectorXd z = woodbury_lu_.solve(Da * x_c(active));
       x_c -= schur_inverse_(Eigen::all, active) * z;
     }
   }
@@ -152,8 +174,8 @@ Eigen::VectorXd CondensedSolve::schur_step(const Eigen::MatrixXd& D, const std::
 }
 
 // With y = A^-1 b and S = P A^-1 P^T: (1 + S_II D_II) z = y_I, then dx = A^-1 (b - P_I^T D_II z).
-Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std::vector<int>& active,
-                                             const Eigen::VectorXd& b, LinearSolveCost& cost) {
+Eigen::VectorXd CondensedSolve::columns_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost) {
+  const std::vector<int>& active = D.active;
   auto t = Clock::now();
   const Eigen::VectorXd y = linear_->solve(b);
   cost.solve_seconds += seconds_since(t);
@@ -174,8 +196,9 @@ Eigen::VectorXd CondensedSolve::columns_step(const Eigen::MatrixXd& D, const std
   for (int q = 0; q < a; ++q) S.col(q) = columns_[active[q]](active);
   std::vector<int> active_dofs(a);
   for (int q = 0; q < a; ++q) active_dofs[q] = nonlinear_[active[q]];
-  const Eigen::MatrixXd Da = D(active, active);
+  const Eigen::MatrixXd Da = D.on_active();
   const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + S * Da).partialPivLu().solve(y(active_dofs));
+  ++cost.dense_factorizations;
   const Eigen::VectorXd w = Da * z;
   Eigen::VectorXd corrected = b;
   for (int q = 0; q < a; ++q) corrected[active_dofs[q]] -= w[q];

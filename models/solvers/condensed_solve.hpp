@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <Eigen/SparseCore>
 
 #include "assembly/linear_solver.hpp"
 #include "assembly/schur_complement.hpp"
@@ -56,10 +57,15 @@ class CondensedSolve {
   // Refactorises A when the problem, its linear part or its nonlinear dofs changed.
   void prepare(NonlinearProblem& problem, LinearSolveCost& cost);
   Eigen::VectorXd solve(NonlinearProblem& problem, const Eigen::VectorXd& b, LinearSolveCost& cost);
-  Eigen::VectorXd schur_step(const Eigen::MatrixXd& D, const std::vector<int>& active, const Eigen::VectorXd& b,
-                             LinearSolveCost& cost);
-  Eigen::VectorXd columns_step(const Eigen::MatrixXd& D, const std::vector<int>& active, const Eigen::VectorXd& b,
-                               LinearSolveCost& cost);
+  // D = J - A on the nonlinear dofs, as its non-zero entries (positions among the nonlinear dofs).
+  struct NonlinearPart {
+    std::vector<Eigen::Triplet<double, int>> entries;
+    std::vector<int> active;  // the nonlinear dofs with a non-zero row or column of D, in order
+    Eigen::MatrixXd on_active() const;  // D_II
+    Eigen::MatrixXd whole(int m) const;  // D, m x m
+  };
+  Eigen::VectorXd schur_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost);
+  Eigen::VectorXd columns_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost);
 
   LinearStrategy method_;
   std::string linear_solver_name_;
@@ -75,6 +81,12 @@ class CondensedSolve {
   std::unique_ptr<SchurComplement> schur_;
   Eigen::MatrixXd schur_inverse_;
   bool schur_regular_ = false;
+  // The Woodbury system's factorisation, 1 + D_II S_c^-1[I, I], kept while the active set and D_II stay
+  // the same (linear laws in a settled contact state: most iterations of the shipped scenes).
+  std::vector<int> woodbury_active_;
+  Eigen::MatrixXd woodbury_d_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> woodbury_lu_;
+  bool woodbury_valid_ = false;
   // Columns: A's factorisation and the columns of S computed so far.
   std::unique_ptr<LinearSolver> linear_;
   std::vector<Eigen::VectorXd> columns_;

@@ -7,6 +7,7 @@ struct LinearSolveCost {
   double analyze_seconds = 0, factorize_seconds = 0, solve_seconds = 0;
   double condensation_seconds = 0;  // dense interface systems of the condensed solve
   int factorizations = 0;           // sparse numeric factorisations
+  int dense_factorizations = 0;     // LU factorisations of the condensed solve's dense interface systems
 
   LinearSolveCost& operator+=(const LinearSolveCost& other) {
     analyze_seconds += other.analyze_seconds;
@@ -14,6 +15,7 @@ struct LinearSolveCost {
     solve_seconds += other.solve_seconds;
     condensation_seconds += other.condensation_seconds;
     factorizations += other.factorizations;
+    dense_factorizations += other.dense_factorizations;
     return *this;
   }
 };

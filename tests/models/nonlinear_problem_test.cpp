@@ -89,12 +89,13 @@ TEST(NonlinearProblem, NewtonConvergesQuadraticallyOnAHandWrittenSystem) {
 }
 
 // n unit springs in a row, node 0 pulled by a unit force and the nodes `held` tied to the ground by springs
-// of force x + x^3 (the nonlinear dofs). Anchored: node 0 is also tied to the ground by a unit spring, so
-// the linear part A is regular; free: A is the singular Laplacian of a chain that only the cubic springs hold.
+// of force x + cubic x^3 (the nonlinear dofs). Anchored: node 0 is also tied to the ground by a unit spring,
+// so the linear part A is regular; free: A is the singular Laplacian of a chain that only the cubic springs
+// hold. With cubic = 0 the ground springs are linear, yet outside A: a tangent D that never changes.
 class SpringChain : public NonlinearProblem {
  public:
-  SpringChain(int n, bool anchored, std::vector<int> held)
-      : n_(n), x_(Eigen::VectorXd::Zero(n)), f_(Eigen::VectorXd::Zero(n)), nonlinear_(std::move(held)) {
+  SpringChain(int n, bool anchored, std::vector<int> held, double cubic = 1)
+      : n_(n), cubic_(cubic), x_(Eigen::VectorXd::Zero(n)), f_(Eigen::VectorXd::Zero(n)), nonlinear_(std::move(held)) {
     std::vector<Eigen::Triplet<double>> entries;
     for (int i = 0; i + 1 < n; ++i)
       for (auto [r, c, v] : {std::tuple{i, i, 1.0}, {i + 1, i + 1, 1.0}, {i, i + 1, -1.0}, {i + 1, i, -1.0}})
@@ -111,9 +112,9 @@ class SpringChain : public NonlinearProblem {
     if (tangent) jacobian_ = linear_;
     for (int i : nonlinear_) {
       const double x = x_[i];
-      residual_[i] += x + x * x * x;
-      scales_[0] = std::max(scales_[0], std::abs(x + x * x * x));
-      if (tangent) jacobian_.coeffRef(i, i) += 1 + 3 * x * x;
+      residual_[i] += x + cubic_ * x * x * x;
+      scales_[0] = std::max(scales_[0], std::abs(x + cubic_ * x * x * x));
+      if (tangent) jacobian_.coeffRef(i, i) += 1 + 3 * cubic_ * x * x;
     }
   }
   const Eigen::VectorXd& residual() const override { return residual_; }
@@ -130,6 +131,7 @@ class SpringChain : public NonlinearProblem {
 
  private:
   int n_;
+  double cubic_;
   Eigen::VectorXd x_, f_, residual_;
   std::vector<double> scales_;
   std::vector<int> nonlinear_;
@@ -166,6 +168,35 @@ TEST(NonlinearProblem, CondensedSolveFactorisesTheLinearPartOnceAndMatchesTheFul
     EXPECT_TRUE(again.converged() && again.condensed) << method;
     EXPECT_EQ(again.factorizations, 0) << method;
   }
+}
+
+// The Schur path's dense Woodbury system (1 + D_II S_c^-1[I, I]) is factorised again only when the active
+// set or D_II changed: once per iteration for the cubic springs, once in all for linear ones, whose D is
+// the same at every iterate and in the next solve.
+TEST(NonlinearProblem, SchurCondensationRefactorisesItsDenseSystemOnlyWhenTheContactTangentChanges) {
+  const int n = 40;
+  const std::vector<int> held = {10, 25, n - 1};
+  SpringChain cubic(n, true, held);
+  NewtonOptions options;
+  options.condensation = "schur";
+  const NewtonReport changing = NewtonSolver(options).solve(cubic);
+  ASSERT_TRUE(changing.converged()) << changing.message;
+  EXPECT_GT(changing.iterations, 2);
+  EXPECT_EQ(changing.dense_factorizations, changing.iterations);
+
+  SpringChain linear(n, true, held, 0.0);
+  NewtonSolver newton(options);
+  const NewtonReport first = newton.solve(linear);
+  ASSERT_TRUE(first.converged()) << first.message;
+  EXPECT_EQ(first.dense_factorizations, 1);
+  linear.set_free_values(Eigen::VectorXd::Constant(n, 0.5));
+  const NewtonReport again = newton.solve(linear);
+  ASSERT_TRUE(again.converged()) << again.message;
+  EXPECT_GE(again.iterations, 1);
+  EXPECT_EQ(again.dense_factorizations, 0) << "the same D: the kept factorisation serves";
+  // And the kept factorisation gives the right answer: the residual of the linear chain vanishes.
+  linear.assemble(false);
+  EXPECT_LT(linear.residual().norm(), 1e-12);
 }
 
 // Past condensed_max_dofs nonlinear dofs the dense work (m^3) would exceed a full factorisation's: the
