@@ -520,13 +520,30 @@ void Model::assemble(bool tangent) {
   // product is off by at most a few eps (|K| |x|)_i in row i however much its terms cancel (Oettli and
   // Prager's componentwise bound), while its net size K x vanishes where they balance exactly (a uniform
   // piezoelectric stress has no net force on an interior node), which leaves a net scale that is itself
-  // round-off.
-  auto gross_size = [&](const std::string& u, const CsrMatrix& K, const Eigen::VectorXd& x) {
-    return free_norm(u, [&](int r) {
-      double row = 0;
-      for (CsrMatrix::InnerIterator it(K, r); it; ++it) row += std::abs(it.value() * x[it.col()]);
-      return row;
-    });
+  // round-off. One pass over K gives the product (added into `out`) and both norms: the residual is
+  // bandwidth-bound, and K is its largest operand.
+  auto add_measured_product = [&](const std::string& u, const CsrMatrix& K, const Eigen::VectorXd& x,
+                                  Eigen::VectorXd& out) {
+    const auto global = s.layout.global_indices(s.layout.field_index(u));
+    const int* start = K.outerIndexPtr();
+    const int* column = K.innerIndexPtr();
+    const double* value = K.valuePtr();
+    double net = 0, gross = 0;
+    for (int r = 0; r < int(K.rows()); ++r) {
+      double row = 0, row_gross = 0;
+      for (int k = start[r]; k < start[r + 1]; ++k) {
+        const double term = value[k] * x[column[k]];
+        row += term;
+        row_gross += std::abs(term);
+      }
+      out[r] += row;
+      if (global[r] >= 0) {
+        net += row * row;
+        gross += row_gross * row_gross;
+      }
+    }
+    residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(net));
+    round_off_scales_[u] = std::max({round_off_scales_[u], std::sqrt(net), std::sqrt(gross)});
   };
   auto measure_and_add = [&](const std::string& u) {
     Eigen::VectorXd& r = brick_residual.at(u);
@@ -608,10 +625,7 @@ void Model::assemble(bool tangent) {
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
         const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
         const CsrMatrix& K = bt.assembly->block(int(k));
-        const Eigen::VectorXd& x = this->values(bt.trial_fields[k]);
-        const Eigen::VectorXd piece = K * x;
-        measure(u, piece, gross_size(u, K, x));
-        brick_residual.at(u) += piece;
+        add_measured_product(u, K, this->values(bt.trial_fields[k]), brick_residual.at(u));
         touched.insert(u);
       }
     for (const std::string& u : touched) measure_and_add(u);
