@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "assembly/error.hpp"
-#include "assembly/symmetrizing_scale.hpp"
 
 namespace pc {
 void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interface) {
@@ -20,7 +19,8 @@ void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interf
     seen[dof] = 1;
   }
   interface_ = interface;
-  scale_ = symmetrizing_row_scale(a);
+  symmetrizer_.emplace(a);
+  scale_ = symmetrizer_->scale(a);
   listvar_.resize(interface.size());
   for (size_t k = 0; k < interface.size(); ++k) listvar_[k] = interface[k] + 1;
   const auto m = static_cast<MUMPS_INT>(interface.size());
@@ -49,7 +49,7 @@ void SchurComplement::factorize(const CsrMatrix& a) {
           "Schur complement: the matrix contains NaN/Inf");
   factorized_ = false;
   // New values may have lost (or gained) the symmetry the analysis was made for: then it is made anew.
-  std::optional<Eigen::VectorXd> scale = symmetrizing_row_scale(a);
+  std::optional<Eigen::VectorXd> scale = symmetrizer_->scale(a);
   if (bool(scale) != bool(scale_)) analyze(a, std::vector<int>(interface_));
   scale_ = std::move(scale);
   // MUMPS reads the values only here: without iterative refinement or error analysis (ICNTL(10),

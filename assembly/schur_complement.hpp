@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "assembly/mumps_handle.hpp"
+#include "assembly/symmetrizing_scale.hpp"
 #include "assembly/sparse.hpp"
 
 namespace pc {
@@ -49,7 +50,8 @@ class SchurComplement {
   std::vector<int> interface_;
   std::vector<MUMPS_INT> listvar_;
   Eigen::MatrixXd schur_;
-  std::optional<Eigen::VectorXd> scale_;  // the symmetrizing row scale, when the factorisation is LDL^T
+  std::optional<RowSymmetrizer> symmetrizer_;  // for the analysed pattern
+  std::optional<Eigen::VectorXd> scale_;       // the symmetrizing row scale, when the factorisation is LDL^T
   bool analyzed_ = false, factorized_ = false;
 };
 

@@ -14,7 +14,12 @@ class MumpsSolver final : public SolverBase {
  private:
   // LDL^T when a row scale makes the matrix symmetric, LU otherwise: decided on the values at hand.
   void analyze_pattern() override {
+    symmetrizer_.emplace(matrix());
     find_scale();
+    analyze_for_scale();
+  }
+  // The analysis of LDL^T (scale_ found) or LU.
+  void analyze_for_scale() {
     mumps_.set_pattern(matrix(), scale_ ? MumpsHandle::Symmetric : MumpsHandle::General);
     // The values too: MUMPS may use them to pair 2x2 pivots (a weighted matching) in the symmetric analysis.
     mumps_.set_values(matrix(), scale_ ? *scale_ : Eigen::VectorXd());
@@ -30,13 +35,13 @@ class MumpsSolver final : public SolverBase {
   // New values may have lost (or gained) the symmetry the analysis was made for: then it is made anew.
   void factorize_values() override {
     find_scale();
-    if (bool(scale_) != (mumps_.symmetry() == MumpsHandle::Symmetric)) analyze_pattern();
+    if (bool(scale_) != (mumps_.symmetry() == MumpsHandle::Symmetric)) analyze_for_scale();
     mumps_.set_values(matrix(), scale_ ? *scale_ : Eigen::VectorXd());
     mumps_.run(MumpsHandle::Factorize, "factorization");
     mumps_.release_values();
   }
 
-  void find_scale() { scale_ = symmetrizing_row_scale(matrix()); }
+  void find_scale() { scale_ = symmetrizer_->scale(matrix()); }
 
   // The right-hand side array is overwritten with the solution (of diag(s) A x = diag(s) b for LDL^T).
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& b) const override {
@@ -51,6 +56,7 @@ class MumpsSolver final : public SolverBase {
   // solve() is const for callers but MUMPS writes its statistics into the structure.
   mutable MumpsHandle mumps_{"mumps"};
   FactorEstimate estimate_;
+  std::optional<RowSymmetrizer> symmetrizer_;  // for the analysed pattern
   std::optional<Eigen::VectorXd> scale_;
 };
 

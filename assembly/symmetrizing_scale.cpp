@@ -20,23 +20,39 @@ constexpr double kLargestScale = 1e100;
 
 }  // namespace
 
-std::optional<Eigen::VectorXd> symmetrizing_row_scale(const CsrMatrix& a, double tolerance) {
-  require(a.isCompressed() && a.rows() == a.cols(), "symmetrizing_row_scale: needs a compressed square matrix, not ",
-          a.rows(), " x ", a.cols());
+RowSymmetrizer::RowSymmetrizer(const CsrMatrix& pattern) : rows_(pattern.rows()), nonzeros_(pattern.nonZeros()) {
+  require(pattern.isCompressed() && pattern.rows() == pattern.cols(),
+          "RowSymmetrizer: needs a compressed square matrix, not ", pattern.rows(), " x ", pattern.cols());
+  mirror_.resize(pattern.nonZeros());
+  for (int i = 0; i < pattern.rows(); ++i)
+    for (int k = pattern.outerIndexPtr()[i]; k < pattern.outerIndexPtr()[i + 1]; ++k) {
+      mirror_[k] = find_slot(pattern, pattern.innerIndexPtr()[k], i);
+      if (mirror_[k] < 0) {
+        mirror_.clear();
+        return;
+      }
+    }
+}
+
+bool RowSymmetrizer::has_pattern(const CsrMatrix& a) const {
+  return a.isCompressed() && a.rows() == rows_ && a.cols() == rows_ && a.nonZeros() == nonzeros_;
+}
+
+std::optional<Eigen::VectorXd> RowSymmetrizer::scale(const CsrMatrix& a, double tolerance) const {
+  require(has_pattern(a), "RowSymmetrizer: the matrix (", a.rows(), " x ", a.cols(), ", ", a.nonZeros(),
+          " entries) does not have the pattern it was made for (", rows_, " rows, ", nonzeros_, " entries)");
+  if (mirror_.empty() && nonzeros_ > 0) return std::nullopt;
   const int n = int(a.rows());
   const int* start = a.outerIndexPtr();
   const int* column = a.innerIndexPtr();
   const double* value = a.valuePtr();
-  // The slot of the transposed entry (j, i) of every slot (i, j); a missing one is a nonsymmetric pattern.
-  std::vector<int> mirror(a.nonZeros());
+  const std::vector<int>& mirror = mirror_;
   std::vector<double> row_max(n, 0);
   for (int i = 0; i < n; ++i)
     for (int k = start[i]; k < start[i + 1]; ++k) {
-      mirror[k] = find_slot(a, column[k], i);
-      if (mirror[k] < 0) return std::nullopt;
+      if (!std::isfinite(value[k])) return std::nullopt;
       row_max[i] = std::max(row_max[i], std::abs(value[k]));
     }
-  if (!std::all_of(value, value + a.nonZeros(), [](double x) { return std::isfinite(x); })) return std::nullopt;
 
   // Breadth-first through strong pairs, s_j = s_i A_ij / A_ji; a row not reached starts a component.
   Eigen::VectorXd s = Eigen::VectorXd::Zero(n);
@@ -70,6 +86,10 @@ std::optional<Eigen::VectorXd> symmetrizing_row_scale(const CsrMatrix& a, double
       if (gap > tolerance * std::max(std::abs(s[i]) * row_max[i], std::abs(s[j]) * row_max[j])) return std::nullopt;
     }
   return s;
+}
+
+std::optional<Eigen::VectorXd> symmetrizing_row_scale(const CsrMatrix& a, double tolerance) {
+  return RowSymmetrizer(a).scale(a, tolerance);
 }
 
 }  // namespace pc

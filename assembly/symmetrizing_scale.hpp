@@ -9,6 +9,7 @@
 // equations gets it, and a nonsymmetric term (a non-associated friction law, a pressure-dependent
 // conductance) makes the test fail and the caller keep LU.
 #include <optional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -16,11 +17,28 @@
 
 namespace pc {
 
-// The scale, or nullopt when the pattern is not symmetric or some entry pair disagrees by more than
-// `tolerance` times the larger of the two scaled rows' largest entries (so that entries that are sums
-// with cancellation, exact only to round-off of their row, do not fail the test). The scale of each
-// connected component is fixed by its lowest row, whose scale is 1; rows without off-diagonal entries
-// keep 1. Signs may differ from row to row (an indefinite symmetric matrix is fine).
+// The test for the matrices of one pattern: the slot of each entry's transpose is found once (a solver
+// refactorising new values of the same pattern then pays one pass over the values).
+class RowSymmetrizer {
+ public:
+  explicit RowSymmetrizer(const CsrMatrix& pattern);
+  // Whether `a` has the size and number of entries of the pattern this was made for (the caller keeps
+  // one per analysed pattern; the entries themselves are not compared).
+  bool has_pattern(const CsrMatrix& a) const;
+  // The scale for the values of `a` (which must have the pattern), or nullopt when the pattern is not
+  // symmetric or some entry pair disagrees by more than `tolerance` times the larger of the two scaled
+  // rows' largest entries (so that entries that are sums with cancellation, exact only to round-off of
+  // their row, do not fail the test). The scale of each connected component is fixed by its lowest row,
+  // whose scale is 1; rows without off-diagonal entries keep 1. Signs may differ from row to row (an
+  // indefinite symmetric matrix is fine).
+  std::optional<Eigen::VectorXd> scale(const CsrMatrix& a, double tolerance = 1e-12) const;
+
+ private:
+  long rows_ = 0, nonzeros_ = 0;
+  std::vector<int> mirror_;  // the slot of (j, i) for the slot of (i, j); empty: the pattern is not symmetric
+};
+
+// RowSymmetrizer(a).scale(a, tolerance): for a matrix met once.
 std::optional<Eigen::VectorXd> symmetrizing_row_scale(const CsrMatrix& a, double tolerance = 1e-12);
 
 }  // namespace pc

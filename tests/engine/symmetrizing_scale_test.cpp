@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "assembly/error.hpp"
 #include "support/test_matrices.hpp"
 
 namespace pc {
@@ -109,6 +110,23 @@ TEST(SymmetrizingRowScale, AcceptsRoundOffOfARowAndRefusesMore) {
     t.emplace_back(10, 0, 4e-4 * (1 + gap));
     EXPECT_EQ(symmetrizing_row_scale(from_triplets(16, 16, t)).has_value(), symmetric) << "gap " << gap;
   }
+}
+
+// One RowSymmetrizer per pattern serves every matrix of it: symmetric values get their scale, others none,
+// and a matrix of another size is refused by name.
+TEST(RowSymmetrizer, ServesEveryMatrixOfItsPattern) {
+  const CsrMatrix symmetric = row_scaled(saddle_point(5), mixed_weights(saddle_point(5).rows()));
+  const RowSymmetrizer symmetrizer(symmetric);
+  EXPECT_TRUE(symmetrizer.scale(symmetric).has_value());
+  CsrMatrix changed = symmetric;
+  changed.valuePtr()[1] *= 1.5;
+  EXPECT_FALSE(symmetrizer.scale(changed).has_value());
+  const CsrMatrix doubled = row_scaled(symmetric, Eigen::VectorXd::Constant(symmetric.rows(), 2.0));
+  const std::optional<Eigen::VectorXd> s = symmetrizer.scale(doubled);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_LT(asymmetry(doubled, *s), 1e-14);
+  EXPECT_FALSE(symmetrizer.has_pattern(laplacian_2d(3)));
+  EXPECT_THROW(symmetrizer.scale(laplacian_2d(3)), Error);
 }
 
 }  // namespace
