@@ -1,11 +1,18 @@
 #include "assembly/term_assembly.hpp"
 
 #include <algorithm>
+#include <exception>
 
 #include "assembly/error.hpp"
+#include "assembly/threads.hpp"
 
 namespace pc {
 namespace {
+
+// Element loops this short stay on one thread (the threads' start would cost more than they save), and
+// longer ones go in chunks of kChunkElements computed elements (their local systems are kept until added).
+constexpr int kMinElementsForThreads = 256;
+constexpr int kChunkElements = 1024;
 
 int highest_order(const std::vector<const FESpace*>& spaces) {
   int order = 1;
@@ -127,20 +134,30 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
   const int dim = geo.mesh().dim();
   const int nq = geo.num_points();
   const bool cells = geo.integration() == Integration::Cells;
-  ElementData data;
-  data.dim = dim;
-  data.num_points = nq;
-  data.time = time;
-  data.weights.resize(nq);
-  data.points.resize(nq);
-  if (!cells) data.normals.resize(nq);
-  data.fields.resize(n_fields);
-  LocalSystem local;
-  local.residual.resize(n_tests);
-  local.tangent.resize(term.couplings().size());
-  std::vector<std::vector<int>> dofs(n_fields);
+  // What one element needs while it is computed: a thread has one at a time.
+  struct Workspace {
+    ElementData data;
+    LocalSystem local;
+    std::vector<std::vector<int>> dofs;
+  };
+  auto make_workspace = [&] {
+    Workspace w;
+    w.data.dim = dim;
+    w.data.num_points = nq;
+    w.data.time = time;
+    w.data.weights.resize(nq);
+    w.data.points.resize(nq);
+    if (!cells) w.data.normals.resize(nq);
+    w.data.fields.resize(n_fields);
+    w.local.residual.resize(n_tests);
+    w.local.tangent.resize(term.couplings().size());
+    w.dofs.resize(n_fields);
+    return w;
+  };
 
-  for (int e = 0; e < geo.num_elements(); ++e) {
+  // The element's local residual and tangent (no shared state is written).
+  auto compute = [&](int e, Workspace& w) {
+    ElementData& data = w.data;
     data.cell = geo.cell(e);
     data.local_face = geo.local_face(e);
     for (int q = 0; q < nq; ++q) {
@@ -156,9 +173,9 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
       field.num_shapes = n;
       field.num_components = nc;
       field.N = t.N.data();
-      element_dofs(f, e, dofs[f]);
+      element_dofs(f, e, w.dofs[f]);
       field.coefficients.resize(n * nc);
-      for (int a = 0; a < n * nc; ++a) field.coefficients[a] = (*values[f])[dofs[f][a]];
+      for (int a = 0; a < n * nc; ++a) field.coefficients[a] = (*values[f])[w.dofs[f][a]];
       field.value.assign(nq * nc, 0.0);
       for (int q = 0; q < nq; ++q)
         for (int i = 0; i < n; ++i)
@@ -183,40 +200,71 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
         }
       }
     }
-    for (int ti = 0; ti < n_tests; ++ti)
-      local.residual[ti].setZero(dofs[term.tests()[ti]].size());
+    for (int ti = 0; ti < n_tests; ++ti) w.local.residual[ti].setZero(w.dofs[term.tests()[ti]].size());
     if (tangent)
       for (int k = 0; k < int(term.couplings().size()); ++k)
-        local.tangent[k].setZero(dofs[term.couplings()[k].test].size(), dofs[term.couplings()[k].trial].size());
+        w.local.tangent[k].setZero(w.dofs[term.couplings()[k].test].size(), w.dofs[term.couplings()[k].trial].size());
+    term.assemble(data, w.local, want_residual, tangent);
+  };
 
-    term.assemble(data, local, want_residual, tangent);
-
+  // Adds the element's contributions into the global residuals and blocks (in element order).
+  auto scatter = [&](const Workspace& w) {
     for (int ti = 0; ti < n_tests; ++ti) {
       if (residuals[ti] == nullptr) continue;
-      const std::vector<int>& rows = dofs[term.tests()[ti]];
-      for (int a = 0; a < int(rows.size()); ++a) (*residuals[ti])[rows[a]] += local.residual[ti][a];
+      const std::vector<int>& rows = w.dofs[term.tests()[ti]];
+      for (int a = 0; a < int(rows.size()); ++a) (*residuals[ti])[rows[a]] += w.local.residual[ti][a];
     }
-    if (tangent) {
-      for (int k = 0; k < int(term.couplings().size()); ++k) {
-        const Eigen::MatrixXd& K = local.tangent[k];
-        const std::vector<int>& row_dofs = dofs[term.couplings()[k].test];
-        const std::vector<int>& col_dofs = dofs[term.couplings()[k].trial];
-        CsrMatrix& block = blocks_[k];
-        const int* outer = block.outerIndexPtr();
-        const int* inner = block.innerIndexPtr();
-        double* target = block.valuePtr();
-        // Each entry is in its row's pattern (the element made it): a binary search over the row's sorted
-        // columns finds its slot.
-        for (int r = 0; r < int(K.rows()); ++r) {
-          const int* begin = inner + outer[row_dofs[r]];
-          const int* end = inner + outer[row_dofs[r] + 1];
-          for (int c = 0; c < int(K.cols()); ++c)
-            target[std::lower_bound(begin, end, col_dofs[c]) - inner] += K(r, c);
-        }
+    if (!tangent) return;
+    for (int k = 0; k < int(term.couplings().size()); ++k) {
+      const Eigen::MatrixXd& K = w.local.tangent[k];
+      const std::vector<int>& row_dofs = w.dofs[term.couplings()[k].test];
+      const std::vector<int>& col_dofs = w.dofs[term.couplings()[k].trial];
+      CsrMatrix& block = blocks_[k];
+      const int* outer = block.outerIndexPtr();
+      const int* inner = block.innerIndexPtr();
+      double* target = block.valuePtr();
+      // Each entry is in its row's pattern (the element made it): a binary search over the row's sorted
+      // columns finds its slot.
+      for (int r = 0; r < int(K.rows()); ++r) {
+        const int* begin = inner + outer[row_dofs[r]];
+        const int* end = inner + outer[row_dofs[r] + 1];
+        for (int c = 0; c < int(K.cols()); ++c) target[std::lower_bound(begin, end, col_dofs[c]) - inner] += K(r, c);
       }
     }
-    ++elements_assembled_;
+  };
+
+  const int n_elements = geo.num_elements();
+  const int threads = n_elements >= kMinElementsForThreads ? assembly_threads() : 1;
+  if (threads == 1) {
+    Workspace w = make_workspace();
+    for (int e = 0; e < n_elements; ++e) {
+      compute(e, w);
+      scatter(w);
+    }
+  } else {
+    // Chunks of elements are computed in parallel, then added in element order: the sums are those of
+    // the loop above, bit for bit. An exception leaves the parallel loop as the first failed element's.
+    std::vector<Workspace> chunk(std::min(kChunkElements, n_elements));
+    for (Workspace& w : chunk) w = make_workspace();
+    std::vector<std::exception_ptr> failures(chunk.size());
+    for (int first = 0; first < n_elements; first += int(chunk.size())) {
+      const int count = std::min(int(chunk.size()), n_elements - first);
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static)
+#endif
+      for (int i = 0; i < count; ++i) {
+        try {
+          compute(first + i, chunk[i]);
+        } catch (...) {
+          failures[i] = std::current_exception();
+        }
+      }
+      for (int i = 0; i < count; ++i)
+        if (failures[i]) std::rethrow_exception(failures[i]);
+      for (int i = 0; i < count; ++i) scatter(chunk[i]);
+    }
   }
+  elements_assembled_ += n_elements;
 }
 
 }  // namespace pc

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "assembly/error.hpp"
+#include "assembly/threads.hpp"
 
 namespace pc {
 
@@ -59,6 +60,9 @@ struct Model::System {
 };
 
 namespace {
+
+// Products with fewer entries stay on one thread (starting threads would cost more than they save).
+constexpr long kMinProductEntriesForThreads = 20000;
 
 std::string join(const std::vector<std::string>& names) {
   std::string out;
@@ -528,8 +532,16 @@ void Model::assemble(bool tangent) {
     const int* start = K.outerIndexPtr();
     const int* column = K.innerIndexPtr();
     const double* value = K.valuePtr();
-    double net = 0, gross = 0;
-    for (int r = 0; r < int(K.rows()); ++r) {
+    const int rows = int(K.rows());
+    // Rows in parallel (each is its own sum), their norms then summed in row order: bitwise the same on
+    // any number of threads.
+    product_rows_.resize(rows);
+    gross_rows_.resize(rows);
+    const int threads = K.nonZeros() >= kMinProductEntriesForThreads ? assembly_threads() : 1;
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+#endif
+    for (int r = 0; r < rows; ++r) {
       double row = 0, row_gross = 0;
       for (int k = start[r]; k < start[r + 1]; ++k) {
         const double term = value[k] * x[column[k]];
@@ -537,11 +549,15 @@ void Model::assemble(bool tangent) {
         row_gross += std::abs(term);
       }
       out[r] += row;
-      if (global[r] >= 0) {
-        net += row * row;
-        gross += row_gross * row_gross;
-      }
+      product_rows_[r] = row;
+      gross_rows_[r] = row_gross;
     }
+    double net = 0, gross = 0;
+    for (int r = 0; r < rows; ++r)
+      if (global[r] >= 0) {
+        net += product_rows_[r] * product_rows_[r];
+        gross += gross_rows_[r] * gross_rows_[r];
+      }
     residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(net));
     round_off_scales_[u] = std::max({round_off_scales_[u], std::sqrt(net), std::sqrt(gross)});
   };

@@ -171,6 +171,7 @@ class Model : public DataView, public NonlinearProblem {
   std::map<std::string, Eigen::VectorXd> field_residuals_;
   std::map<std::string, double> residual_scales_;
   std::map<std::string, double> round_off_scales_;
+  std::vector<double> product_rows_, gross_rows_;  // scratch of the residual's products, per row
   Eigen::VectorXd residual_;
   std::uint64_t clock_ = 0;           // version source for constants and data fields
   std::uint64_t linear_version_ = 1;  // changes when a linear brick's blocks change

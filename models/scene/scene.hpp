@@ -75,6 +75,7 @@ struct Scene {
   double cutback_factor = 0.5;
   int max_attempts = 0;           // time.max_attempts: step attempts, accepted or cut back (0: no limit)
   double max_wall_seconds = 0;    // time.max_wall_seconds (0: no limit)
+  int threads = 0;                // solver.threads: of the element loops and products (0: assembly/threads.hpp's default)
   SceneOutput output;
 };
 

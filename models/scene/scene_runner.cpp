@@ -1,5 +1,7 @@
 #include "models/scene/scene_runner.hpp"
 
+#include "assembly/threads.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -13,8 +15,10 @@
 
 
 #include "assembly/atomic_file.hpp"
+#include "assembly/blas_workspace.hpp"
 #include "assembly/error.hpp"
 #include "assembly/point_locator.hpp"
+#include "assembly/threads.hpp"
 #include "bricks/law_registry.hpp"
 #include "models/model_state.hpp"
 #include "models/output/boundary_table.hpp"
@@ -235,6 +239,7 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   s.set("newton_iterations_total", Json(double(r.newton_iterations_total)));
   s.set("newton_iterations_max_per_step", Json(double(r.newton_iterations_max_per_step)));
   s.set("wall_s_total", Json(r.wall_seconds));
+  s.set("threads", Json(double(assembly_threads())));
   if (!r.linear_strategy.empty()) s.set("linear_strategy", Json(r.linear_strategy));
   // Where the wall time went (models/scene/run_timing.hpp), and the factorisations it paid for.
   Json timing = Json::object();
@@ -608,6 +613,8 @@ const char* const sweep_part = "sweep_phi_f";
 }  // namespace
 
 bool run_scene(const Scene& scene, const SceneRunOptions& options) {
+  reserve_blas_workspace();  // now, while memory is plentiful (assembly/blas_workspace.hpp)
+  set_assembly_threads(scene.threads);  // 0: PIEZOCONTACT_THREADS or the cores
   bool all_completed = true;
   std::string stop_reason;
   const std::string& out = options.output_directory;

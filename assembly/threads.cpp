@@ -1,0 +1,39 @@
+#include "assembly/threads.hpp"
+
+#include <atomic>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include "assembly/error.hpp"
+
+namespace pc {
+namespace {
+
+std::atomic<int> chosen_threads{0};  // 0: the default
+
+}  // namespace
+
+int default_assembly_threads() {
+  if (const char* text = std::getenv("PIEZOCONTACT_THREADS"); text != nullptr && *text != '\0') {
+    char* end = nullptr;
+    const long threads = std::strtol(text, &end, 10);
+    require(*end == '\0' && threads >= 1 && threads <= 4096,
+            "PIEZOCONTACT_THREADS must be an integer from 1 to 4096, got '", text, "'");
+    return int(threads);
+  }
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores == 0 ? 1 : int(cores);
+}
+
+int assembly_threads() {
+  const int chosen = chosen_threads.load();
+  return chosen > 0 ? chosen : default_assembly_threads();
+}
+
+void set_assembly_threads(int threads) {
+  require(threads >= 0, "set_assembly_threads: the thread count must be >= 1 (0: the default), got ", threads);
+  chosen_threads.store(threads);
+}
+
+}  // namespace pc
