@@ -21,16 +21,15 @@
 #include "models/piezo/initial_potential.hpp"
 #include "models/scene/scene.hpp"
 #include "support/child_process.hpp"
+#include "support/stopwatch.hpp"
 
 namespace {
 
 using namespace pc;
-using Clock = std::chrono::steady_clock;
-
+using study::Clock;
+using study::seconds_since;
 const char* kVariants[] = {"a_mechanical", "b_insulated", "c_conductive", "d_quasistatic"};
 const std::string kScene = (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes/paper2d.json").string();
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 PiezoContactSpec variant_spec(const Scene& scene, const std::string& variant) {
   PiezoContactSpec spec = scene.spec;

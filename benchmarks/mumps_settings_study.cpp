@@ -22,20 +22,16 @@
 #include "assembly/mumps_handle.hpp"
 #include "assembly/symmetrizing_scale.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "support/stopwatch.hpp"
 
 using namespace pc;
+using study::Clock;
+using study::median;
+using study::seconds_since;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 constexpr int kRepeats = 5;
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 struct Setting {
   const char* ordering_name;

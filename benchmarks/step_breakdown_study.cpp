@@ -35,22 +35,16 @@
 #include "models/output/csv_log.hpp"
 #include "models/scene/run_timing.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "support/stopwatch.hpp"
 
 using namespace pc;
+using study::Clock;
+using study::median;
+using study::seconds_since;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 constexpr int kSolveRepeats = 21;
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 // "120x40,240x80" -> {{120, 40}, {240, 80}}
 std::vector<std::pair<int, int>> parse_sizes(const std::string& text) {

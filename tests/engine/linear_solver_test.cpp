@@ -197,11 +197,7 @@ TEST(LinearSolvers, LuSolversSolveNonsymmetricAndIndefiniteSystemsAndAgree) {
 // on the same pattern switch it back to LU.
 TEST(LinearSolvers, MumpsFactorisesRowWeightedSymmetricMatricesAsLdlt) {
   const CsrMatrix symmetric = row_scaled(saddle_point(20), mixed_weights(saddle_point(20).rows()));
-  const CsrMatrix general = [&] {
-    CsrMatrix changed = symmetric;
-    changed.valuePtr()[1] *= 1.5;  // one entry off: no scaling makes it symmetric
-    return changed;
-  }();
+  const CsrMatrix general = one_entry_changed(symmetric);
   const Eigen::VectorXd b = rhs_for(symmetric);
   const auto mumps = make_linear_solver("mumps");
   double stored[2] = {0, 0};

@@ -50,11 +50,7 @@ TEST(SchurComplement, MatchesTheDenseSchurComplementOfANonsymmetricMatrix) {
 // the symmetry on the same pattern are condensed by LU after a new analysis.
 TEST(SchurComplement, CondensesRowWeightedSymmetricMatricesByLdltAndOthersByLu) {
   const CsrMatrix symmetric = row_scaled(saddle_point(7), mixed_weights(saddle_point(7).rows()));
-  const CsrMatrix general = [&] {
-    CsrMatrix changed = symmetric;
-    changed.valuePtr()[1] *= 1.5;  // one entry off: no scaling makes it symmetric
-    return changed;
-  }();
+  const CsrMatrix general = one_entry_changed(symmetric);
   const Split s = split(int(symmetric.rows()));
   SchurComplement schur;
   schur.analyze(symmetric, s.interface);

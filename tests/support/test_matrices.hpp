@@ -66,6 +66,14 @@ inline Eigen::VectorXd mixed_weights(Eigen::Index n) {
   return d;
 }
 
+// The matrix with its second stored entry 1.5 times larger: one entry off, so that no row scaling makes a
+// symmetric matrix symmetric again.
+inline CsrMatrix one_entry_changed(const CsrMatrix& a) {
+  CsrMatrix changed = a;
+  changed.valuePtr()[1] *= 1.5;
+  return changed;
+}
+
 inline Eigen::VectorXd rhs_for(const CsrMatrix& matrix) {
   Eigen::VectorXd x(matrix.rows());
   for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = std::sin(0.37 * static_cast<double>(i)) + 0.5;
