@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 #include "assembly/solver_base.hpp"
 
 namespace pc {
@@ -77,7 +78,9 @@ Eigen::VectorXd SolverBase::solve(const Eigen::VectorXd& b) const {
   Eigen::VectorXd x = solve_factorized(b);
   // The back ends only report exactly zero pivots. A numerically singular matrix (a body free to move)
   // still yields a "solution", huge and missing b, or NaN: one product with the matrix catches it.
-  const double residual = (matrix_ * x - b).norm();
+  Eigen::VectorXd product = matrix_ * x;
+  if (takes_shares()) processes::sum({product.data(), size_t(product.size())});  // the shares' products
+  const double residual = (product - b).norm();
   if (!(residual <= kMaxRelativeResidual * b.norm()))  // written so that NaN fails too
     fail(name(), ": the solution misses the right-hand side (relative residual ", residual / b.norm(),
          "): the matrix is numerically singular (a body free to move? missing Dirichlet conditions?)");
@@ -101,6 +104,13 @@ Registry<LinearSolverFactory>& linear_solver_registry() {
 
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name) {
   return linear_solver_registry().at(name, "linear solver").create();
+}
+
+std::unique_ptr<LinearSolver> make_model_solver(const std::string& name) {
+  std::unique_ptr<LinearSolver> solver = make_linear_solver(name);
+  require(!processes::distributed() || solver->takes_shares(), "solver.linear = '", name, "' factorises a matrix of ",
+          "one process, but this run is distributed over ", processes::count(), " processes; use 'mumps'");
+  return solver;
 }
 
 std::vector<std::string> linear_solver_names() { return linear_solver_registry().names(); }

@@ -36,6 +36,9 @@ class LinearSolver {
   virtual bool is_analyzed_for(const CsrMatrix& matrix) const = 0;
   // After analyze(): the predicted size and work of the factorisation.
   virtual FactorEstimate factor_estimate() const { return {}; }
+  // Whether each process of a distributed run (assembly/processes.hpp) gives its share of the matrix, the
+  // solver factorising their sum (MUMPS), rather than a whole matrix of its own.
+  virtual bool takes_shares() const { return false; }
 
   // analyze (when the pattern is new) + factorize + solve, for one-off systems.
   Eigen::VectorXd solve_once(const CsrMatrix& matrix, const Eigen::VectorXd& b);
@@ -48,6 +51,9 @@ using LinearSolverFactory = std::unique_ptr<LinearSolver> (*)();
 Registry<LinearSolverFactory>& linear_solver_registry();
 // Throws on an unknown name, listing the registered ones.
 std::unique_ptr<LinearSolver> make_linear_solver(const std::string& name = "umfpack");
+// The same, for a model distributed over the processes of the run: a solver that takes their shares,
+// or pc::Error naming the solver and the number of processes.
+std::unique_ptr<LinearSolver> make_model_solver(const std::string& name);
 std::vector<std::string> linear_solver_names();
 
 }  // namespace pc

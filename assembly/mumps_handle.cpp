@@ -3,20 +3,20 @@
 #include <cstdint>
 
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 
 namespace pc {
 namespace {
 
 constexpr MUMPS_INT kInitialize = -1;
 constexpr MUMPS_INT kTerminate = -2;
-// The Fortran handle of MPI_COMM_WORLD, which the sequential library's MPI stub accepts without MPI_Init.
-constexpr MUMPS_INT kUseCommWorld = -987654;
+constexpr MUMPS_INT kDistributedAssembledInput = 3;  // ICNTL(18)
 // INFO(1) for a numerically singular matrix (INFO(2) then counts the pivots eliminated before).
 constexpr MUMPS_INT kNumericallySingular = -10;
 
 }  // namespace
 
-MumpsHandle::MumpsHandle(const char* owner) : owner_(owner) { start(General); }
+MumpsHandle::MumpsHandle(const char* owner, Scope scope) : owner_(owner), scope_(scope) { start(General); }
 
 MumpsHandle::~MumpsHandle() { stop(); }
 
@@ -24,7 +24,7 @@ void MumpsHandle::start(Symmetry symmetry) {
   mumps_ = DMUMPS_STRUC_C{};
   mumps_.sym = symmetry;
   mumps_.par = 1;  // the host process works too
-  mumps_.comm_fortran = kUseCommWorld;
+  mumps_.comm_fortran = distributed() ? processes::fortran_world() : processes::fortran_self();
   mumps_.job = kInitialize;
   dmumps_c(&mumps_);
   require(mumps_.info[0] >= 0, owner_, ": MUMPS initialization failed with INFO(1) = ", mumps_.info[0]);
@@ -33,6 +33,7 @@ void MumpsHandle::start(Symmetry symmetry) {
   icntl(2) = -1;
   icntl(3) = -1;
   icntl(4) = 0;
+  if (distributed()) icntl(18) = kDistributedAssembledInput;
 }
 
 void MumpsHandle::stop() {
@@ -72,10 +73,16 @@ void MumpsHandle::set_pattern(const CsrMatrix& a, Symmetry symmetry) {
       if (symmetry == Symmetric) lower_slots_.push_back(slot);
     }
   mumps_.n = static_cast<MUMPS_INT>(a.rows());
-  mumps_.nnz = static_cast<std::int64_t>(rows_.size());
-  mumps_.irn = rows_.data();
-  mumps_.jcn = cols_.data();
-  mumps_.a = nullptr;  // no values: the analysis depends on the pattern only
+  if (distributed()) {
+    mumps_.nnz_loc = static_cast<std::int64_t>(rows_.size());
+    mumps_.irn_loc = rows_.data();
+    mumps_.jcn_loc = cols_.data();
+  } else {
+    mumps_.nnz = static_cast<std::int64_t>(rows_.size());
+    mumps_.irn = rows_.data();
+    mumps_.jcn = cols_.data();
+  }
+  // No values (released above): the analysis depends on the pattern only.
 }
 
 // For Symmetric, the lower triangle must match and every entry above have its mirror below.
@@ -97,26 +104,28 @@ bool MumpsHandle::has_pattern(const CsrMatrix& a) const {
 
 void MumpsHandle::set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scale) {
   // MUMPS only reads the values; its C interface is not const-correct.
-  if (symmetry() == General) {
-    mumps_.a = const_cast<double*>(a.valuePtr());
-    return;
+  double* values = const_cast<double*>(a.valuePtr());
+  if (symmetry() == Symmetric) {
+    scaled_values_.resize(lower_slots_.size());
+    for (size_t entry = 0; entry < lower_slots_.size(); ++entry)
+      scaled_values_[entry] = row_scale[rows_[entry] - 1] * a.valuePtr()[lower_slots_[entry]];
+    values = scaled_values_.data();
   }
-  scaled_values_.resize(lower_slots_.size());
-  for (size_t entry = 0; entry < lower_slots_.size(); ++entry)
-    scaled_values_[entry] = row_scale[rows_[entry] - 1] * a.valuePtr()[lower_slots_[entry]];
-  mumps_.a = scaled_values_.data();
+  (distributed() ? mumps_.a_loc : mumps_.a) = values;
 }
 
 void MumpsHandle::release_values() {
   mumps_.a = nullptr;
+  mumps_.a_loc = nullptr;
   std::vector<double>().swap(scaled_values_);
 }
 
 void MumpsHandle::run(Job job, const char* phase) {
   mumps_.job = job;
   dmumps_c(&mumps_);
-  const MUMPS_INT info1 = mumps_.info[0];
-  const MUMPS_INT info2 = mumps_.info[1];
+  // INFOG is the same on every process (INFO is each one's own, -1 where another failed).
+  const MUMPS_INT info1 = distributed() ? mumps_.infog[0] : mumps_.info[0];
+  const MUMPS_INT info2 = distributed() ? mumps_.infog[1] : mumps_.info[1];
   if (info1 == kNumericallySingular)
     fail(owner_, ": the matrix is numerically singular (", phase, " failed with INFO(1) = ", info1, ", INFO(2) = ", info2,
          ")");

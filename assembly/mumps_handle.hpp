@@ -1,8 +1,12 @@
 #pragma once
-// Internal to the MUMPS back ends (solver_mumps.cpp, schur_complement.cpp): one sequential MUMPS instance,
-// silenced (errors become pc::Error naming the phase and INFO), and the matrix handed over as MUMPS's
-// 1-based coordinates: whole, for an LU factorisation, or the lower triangle of a row-scaled matrix that
-// is symmetric (assembly/symmetrizing_scale.hpp), for LDL^T.
+// Internal to the MUMPS back ends (solver_mumps.cpp, schur_complement.cpp): one MUMPS instance, silenced
+// (errors become pc::Error naming the phase and INFO), and the matrix handed over as MUMPS's 1-based
+// coordinates: whole, for an LU factorisation, or the lower triangle of a row-scaled matrix that is
+// symmetric (assembly/symmetrizing_scale.hpp), for LDL^T.
+// A local instance works on this process alone (MPI_COMM_SELF in the MPI build). A distributed one spans
+// every process (assembly/processes.hpp): each gives its share of the matrix, entries that the processes
+// sum (MUMPS's distributed assembled input, ICNTL(18) = 3), and the right-hand side and the solution are
+// whole on the host, rank 0.
 #include <optional>
 #include <vector>
 
@@ -19,7 +23,9 @@ class MumpsHandle {
   // MUMPS's SYM: general (LU) or general symmetric (LDL^T with 2x2 pivots, indefinite matrices allowed).
   enum Symmetry : MUMPS_INT { General = 0, Symmetric = 2 };
 
-  explicit MumpsHandle(const char* owner);
+  enum Scope { Local, Distributed };
+
+  explicit MumpsHandle(const char* owner, Scope scope = Local);
   ~MumpsHandle();
   MumpsHandle(const MumpsHandle&) = delete;
   MumpsHandle& operator=(const MumpsHandle&) = delete;
@@ -34,6 +40,7 @@ class MumpsHandle {
   // its default (set them after this call).
   void set_pattern(const CsrMatrix& a, Symmetry symmetry = General);
   Symmetry symmetry() const { return Symmetry(mumps_.sym); }
+  bool distributed() const { return scope_ == Distributed; }
   // Whether `a` has the pattern last given to set_pattern (so that a caller need keep no copy to compare).
   bool has_pattern(const CsrMatrix& a) const;
   // Points MUMPS at the values of `a` (same pattern as set_pattern's): `a`'s own array in General mode;
@@ -50,6 +57,7 @@ class MumpsHandle {
   void stop();
 
   const char* owner_;
+  Scope scope_;
   DMUMPS_STRUC_C mumps_{};
   std::vector<MUMPS_INT> rows_, cols_;
   std::vector<int> lower_slots_;  // Symmetric: the slots of `a` in the lower triangle, in MUMPS's order

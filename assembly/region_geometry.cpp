@@ -37,7 +37,8 @@ Eigen::Matrix<double, 3, 2> face_map_derivative(Shape cell, int face, const doub
 
 }  // namespace
 
-RegionGeometry::RegionGeometry(const Mesh& mesh, const std::string& region, int degree)
+RegionGeometry::RegionGeometry(const Mesh& mesh, const std::string& region, int degree,
+                               std::span<const char> owned_cells)
     : mesh_(mesh), region_(region), integration_(mesh.region_kind(region) == RegionKind::Cells ? Integration::Cells
                                                                                                 : Integration::Faces) {
   const Shape shape = mesh.cell_shape();
@@ -45,19 +46,22 @@ RegionGeometry::RegionGeometry(const Mesh& mesh, const std::string& region, int 
   if (integration_ == Integration::Cells) {
     rule_ = &quadrature(shape, degree);
     reference_points_[0] = rule_->points;
-    compute_cells();
+    compute_cells(owned_cells);
   } else {
     rule_ = &quadrature(face_shape(shape, 0), degree);
     for (int f = 0; f < num_faces(shape); ++f)
       for (const auto& s : rule_->points) reference_points_[f + 1].push_back(face_to_cell(shape, f, s.data()));
-    compute_faces();
+    compute_faces(owned_cells);
   }
 }
 
-void RegionGeometry::compute_cells() {
+void RegionGeometry::compute_cells(std::span<const char> owned_cells) {
   const int dim = mesh_.dim();
   const int nq = num_points();
-  cells_ = mesh_.cell_region(region_);
+  require(owned_cells.empty() || int(owned_cells.size()) == mesh_.num_cells(), "RegionGeometry: ",
+          owned_cells.size(), " ownership flags for a mesh of ", mesh_.num_cells(), " cells");
+  for (int c : mesh_.cell_region(region_))
+    if (owned_cells.empty() || owned_cells[size_t(c)]) cells_.push_back(c);
   const size_t n = cells_.size() * nq;
   weights_.resize(n);
   points_.resize(n);
@@ -86,16 +90,18 @@ void RegionGeometry::compute_cells() {
   }
 }
 
-void RegionGeometry::compute_faces() {
+void RegionGeometry::compute_faces(std::span<const char> owned_cells) {
   const int dim = mesh_.dim();
   const int nq = num_points();
   const Shape shape = mesh_.cell_shape();
-  const auto& faces = mesh_.face_region(region_);
-  for (const FaceRef& f : faces) {
+  require(owned_cells.empty() || int(owned_cells.size()) == mesh_.num_cells(), "RegionGeometry: ",
+          owned_cells.size(), " ownership flags for a mesh of ", mesh_.num_cells(), " cells");
+  for (const FaceRef& f : mesh_.face_region(region_)) {
+    if (!owned_cells.empty() && !owned_cells[size_t(f.cell)]) continue;
     cells_.push_back(f.cell);
     local_faces_.push_back(f.local_face);
   }
-  const size_t n = faces.size() * nq;
+  const size_t n = cells_.size() * nq;
   weights_.resize(n);
   points_.resize(n);
   normals_.resize(n);

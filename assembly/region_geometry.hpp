@@ -3,6 +3,7 @@
 // integrated there: weights (rule weight times the measure factor), physical points, inverse Jacobians
 // (cells) and outward normals (faces).
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,9 @@ namespace pc {
 class RegionGeometry {
  public:
   // degree: the polynomial degree the rule integrates exactly (on the cell, or on the face shape).
-  RegionGeometry(const Mesh& mesh, const std::string& region, int degree);
+  // owned_cells, if not empty (one flag per mesh cell): only the region's cells, or faces of cells, that
+  // are flagged (a process's share of a distributed model).
+  RegionGeometry(const Mesh& mesh, const std::string& region, int degree, std::span<const char> owned_cells = {});
 
   const Mesh& mesh() const { return mesh_; }
   const std::string& region() const { return region_; }
@@ -39,8 +42,8 @@ class RegionGeometry {
   }
 
  private:
-  void compute_cells();
-  void compute_faces();
+  void compute_cells(std::span<const char> owned_cells);
+  void compute_faces(std::span<const char> owned_cells);
 
   const Mesh& mesh_;
   std::string region_;

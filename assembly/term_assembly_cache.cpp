@@ -4,9 +4,16 @@
 
 namespace pc {
 
+void TermAssemblyCache::set_owned_cells(std::vector<char> owned) {
+  require(geometries_.empty(), "TermAssemblyCache: set_owned_cells() after a geometry was made");
+  require(owned.empty() || int(owned.size()) == mesh_.num_cells(), "TermAssemblyCache: ", owned.size(),
+          " ownership flags for a mesh of ", mesh_.num_cells(), " cells");
+  owned_cells_ = std::move(owned);
+}
+
 std::shared_ptr<const RegionGeometry> TermAssemblyCache::geometry(const std::string& region, int degree) {
   auto& slot = geometries_[{region, degree}];
-  if (!slot) slot = std::make_shared<const RegionGeometry>(mesh_, region, degree);
+  if (!slot) slot = std::make_shared<const RegionGeometry>(mesh_, region, degree, owned_cells_);
   return slot;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "assembly/block_pattern.hpp"
 #include "assembly/mesh.hpp"
@@ -23,6 +24,9 @@ class TermAssemblyCache {
   TermAssemblyCache& operator=(const TermAssemblyCache&) = delete;
 
   const Mesh& mesh() const { return mesh_; }
+  // From now on, geometries hold only the elements of the flagged cells (one flag per mesh cell; empty:
+  // all). Before the first geometry: those made already would hold other elements.
+  void set_owned_cells(std::vector<char> owned);
   std::shared_ptr<const RegionGeometry> geometry(const std::string& region, int degree);
   // The spaces must outlive the cache (a model's do: they are its fields').
   std::shared_ptr<const BlockPattern> pattern(const std::shared_ptr<const RegionGeometry>& geometry,
@@ -33,6 +37,7 @@ class TermAssemblyCache {
 
  private:
   const Mesh& mesh_;
+  std::vector<char> owned_cells_;
   std::map<std::pair<std::string, int>, std::shared_ptr<const RegionGeometry>> geometries_;
   std::map<std::tuple<const RegionGeometry*, const FESpace*, const FESpace*>, std::shared_ptr<const BlockPattern>>
       patterns_;

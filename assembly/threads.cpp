@@ -1,11 +1,13 @@
 #include "assembly/threads.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <string>
 #include <thread>
 
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 
 namespace pc {
 namespace {
@@ -22,8 +24,9 @@ int default_assembly_threads() {
             "PIEZOCONTACT_THREADS must be an integer from 1 to 4096, got '", text, "'");
     return int(threads);
   }
+  // The processes of a distributed run share the cores (each one's threads would compete with the others').
   const unsigned cores = std::thread::hardware_concurrency();
-  return cores == 0 ? 1 : int(cores);
+  return cores == 0 ? 1 : std::max(1, int(cores) / processes::count());
 }
 
 int assembly_threads() {

@@ -1,6 +1,7 @@
 #pragma once
 // How many threads the element loops (TermAssembly) and the residual's sparse products (Model) use.
-// The default is the environment variable PIEZOCONTACT_THREADS if it is set, else the cores available;
+// The default is the environment variable PIEZOCONTACT_THREADS if it is set, else the cores available
+// (shared among the processes of a distributed run);
 // set_assembly_threads() overrides both (a scene's solver.threads). Results do not depend on the count:
 // elements are computed in parallel and added into the global arrays in element order, and products
 // are computed row by row with their norms summed in row order, as one thread does, so that a run on
@@ -13,7 +14,7 @@ int assembly_threads();
 // threads >= 1; 0 goes back to the default.
 void set_assembly_threads(int threads);
 // The default: PIEZOCONTACT_THREADS (an integer >= 1, else pc::Error naming it and its value), or the
-// cores available.
+// cores available divided by the processes of the run (at least 1).
 int default_assembly_threads();
 
 }  // namespace pc

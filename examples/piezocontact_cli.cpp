@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 #include "models/scene/interrupts.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
@@ -67,7 +68,14 @@ int catalog(const std::string& command, int argc, char** argv) {
   return 0;
 }
 
+// An error on one process of a distributed run ends them all (the others would wait for it for ever).
+int failed() {
+  if (pc::processes::distributed()) pc::processes::abort(1);
+  return 1;
+}
+
 int main(int argc, char** argv) {
+  pc::processes::initialize(&argc, &argv);  // under mpirun; nothing on one process
   if (argc >= 2 && (std::string(argv[1]) == "list" || std::string(argv[1]) == "describe")) {
     try {
       return catalog(argv[1], argc, argv);
@@ -120,7 +128,8 @@ int main(int argc, char** argv) {
         for (const std::string& u : run.model().unknowns()) dofs += run.model().space(u).num_dofs();
       }
       const pc::TimeEstimate predicted = pc::estimate_run_seconds(scene.spec.mesh->dim(), dofs, scene.steps);
-      std::printf("scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s; %d dofs, predicted %.3g s per "
+      if (pc::processes::is_writer())
+        std::printf("scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s; %d dofs, predicted %.3g s per "
                   "foundation (%s)\n",
                   scene.name.c_str(), scene.mesh_description.c_str(), scene.foundations.size(), scene.steps,
                   scene.end_time, dofs, predicted.seconds, predicted.basis);
@@ -135,17 +144,17 @@ int main(int argc, char** argv) {
     return pc::run_scene(scene, options) ? 0 : 1;
   } catch (const pc::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+    return failed();
   } catch (const std::filesystem::filesystem_error& e) {
     // Whatever the runner did not turn into a pc::Error: a clear message and exit 1, never an abort.
     std::fprintf(stderr, "error: writing the results into --out '%s' failed: %s\n", options.output_directory.c_str(),
                  e.what());
-    return 1;
+    return failed();
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: out of memory (std::bad_alloc): the scene needs more memory than the machine has\n");
-    return 1;
+    return failed();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
+    return failed();
   }
 }

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <set>
 
+#include "assembly/cell_partition.hpp"
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 #include "assembly/threads.hpp"
 
 namespace pc {
@@ -337,6 +339,12 @@ void Model::finalize() {
     require(used.count(name) > 0, "Model: field '", name,
             "' is used by no brick; remove it or add the brick that needs it");
 
+  // Distributed: this process's terms hold the elements of its cells only (the partition is the same on
+  // every process), and assemble() sums the processes' residuals.
+  if (processes::distributed()) {
+    owned_cells_ = cells_of_part(partition_cells(*mesh_, processes::count()), processes::rank());
+    assembly_cache_->set_owned_cells(owned_cells_);
+  }
   for (int b = 0; b < int(bricks_.size()); ++b) bind_brick(b);
   assembly_cache_->forget_patterns();  // the blocks have them; the geometries stay shared
   for (const auto& brick : bricks_)
@@ -548,10 +556,14 @@ void Model::assemble(bool tangent) {
         row += term;
         row_gross += std::abs(term);
       }
-      out[r] += row;
       product_rows_[r] = row;
       gross_rows_[r] = row_gross;
     }
+    // Distributed, K is this process's share: the rows are summed over the processes (a row's gross size
+    // then sums each share's, an upper bound of the undivided |K| |x|).
+    processes::sum(product_rows_);
+    processes::sum(gross_rows_);
+    for (int r = 0; r < rows; ++r) out[r] += product_rows_[r];
     double net = 0, gross = 0;
     for (int r = 0; r < rows; ++r)
       if (global[r] >= 0) {
@@ -593,7 +605,11 @@ void Model::assemble(bool tangent) {
       }
     }
     if (!brick.linear()) {
-      for (const std::string& u : touched) measure_and_add(u);
+      for (const std::string& u : touched) {
+        Eigen::VectorXd& share = brick_residual.at(u);  // distributed: of this process's elements
+        processes::sum({share.data(), size_t(share.size())});
+        measure_and_add(u);
+      }
       continue;
     }
     if (!state.tangent_valid) {
@@ -627,6 +643,7 @@ void Model::assemble(bool tangent) {
         bt.assembly->assemble(values, time_, outputs, false);
         for (const std::string& name : bt.uncoupled_data) state.r0_data_versions[name] = field(name).version;
       }
+      for (auto& [u, r0] : state.r0) processes::sum({r0.data(), size_t(r0.size())});
       state.r0_valid = true;
       state.r0_time = time_;
     }

@@ -130,6 +130,12 @@ class Model : public DataView, public NonlinearProblem {
   void set_free_values(const Eigen::VectorXd& x) override;
   void add_to_free_values(const Eigen::VectorXd& step) override;
 
+  // Distributed over several processes (assembly/processes.hpp): one flag per mesh cell, set on the cells
+  // whose elements this process assembles (METIS's partition, made by finalize()); empty on one process.
+  // Residuals and reactions are the whole model's on every process; the Jacobian is this process's share
+  // of the sum that MUMPS factorises.
+  const std::vector<char>& owned_cells() const { return owned_cells_; }
+
   // Drops every cache, so that the next assemble() re-runs every element loop (to compare with cached
   // assembly, or after changing something the model cannot see).
   void invalidate_caches();
@@ -166,6 +172,7 @@ class Model : public DataView, public NonlinearProblem {
   std::map<std::string, std::vector<int>> constrained_;  // per unknown: Dirichlet dofs
   std::vector<DirichletCondition> dirichlet_;
   std::vector<std::string> frozen_;
+  std::vector<char> owned_cells_;
   std::map<std::vector<std::string>, std::unique_ptr<System>> systems_;
   std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
   std::map<std::string, Eigen::VectorXd> field_residuals_;

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 
 namespace pc {
 namespace {
@@ -77,15 +78,14 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
                                 " accepted): the limit max_attempts = ", o.max_attempts, " was reached");
       break;
     }
-    if (o.stop_requested) {
-      if (const std::string reason = o.stop_requested(); !reason.empty()) {
-        summary.message = message("stopped at t = ", t, " after ", state.steps, " steps: ", reason);
-        break;
-      }
-    }
-    if (o.max_wall_seconds > 0 && elapsed() >= o.max_wall_seconds) {
-      summary.message = message("stopped at t = ", t, " after ", state.steps, " steps: the wall-time limit of ",
-                                o.max_wall_seconds, " s was reached");
+    std::string stop;
+    if (o.stop_requested) stop = o.stop_requested();
+    if (stop.empty() && o.max_wall_seconds > 0 && elapsed() >= o.max_wall_seconds)
+      stop = message("the wall-time limit of ", o.max_wall_seconds, " s was reached");
+    // The processes of a distributed run stop together, at the same step, whichever of them was asked to.
+    if (processes::any(!stop.empty())) {
+      if (stop.empty()) stop = "another process of the run was stopped (a signal, or its wall-time limit)";
+      summary.message = message("stopped at t = ", t, " after ", state.steps, " steps: ", stop);
       break;
     }
     ++state.attempts;

@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages piezocontact needs; does nothing when all are present.
+# Usage: scripts/install_dependencies.sh [mpi]   (mpi: also OpenMPI and the MPI build of MUMPS)
 # Run as root (or with sudo available).
 set -euo pipefail
 
 packages=(
   g++ cmake ninja-build pkg-config
-  libeigen3-dev libsuitesparse-dev libmumps-seq-dev libgmsh-dev nlohmann-json3-dev zlib1g-dev
+  libeigen3-dev libsuitesparse-dev libmumps-seq-dev libgmsh-dev nlohmann-json3-dev zlib1g-dev libmetis-dev
   libopenblas0-serial
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
 )
+if [ "${1:-}" = mpi ]; then
+  packages+=(libmumps-dev libopenmpi-dev openmpi-bin)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -2,6 +2,8 @@
 
 #include <csignal>
 
+#include "assembly/processes.hpp"
+
 namespace pc {
 namespace {
 
@@ -26,6 +28,12 @@ const char* interrupt_reason() {
     case SIGINT: return "interrupted by SIGINT";
     default: return "interrupted by SIGTERM";
   }
+}
+
+std::string agreed_interrupt_reason() {
+  const char* reason = interrupt_reason();
+  if (!processes::any(reason != nullptr)) return "";
+  return reason ? reason : "another process of the run was interrupted";
 }
 
 }  // namespace pc

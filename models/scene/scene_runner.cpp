@@ -1,7 +1,5 @@
 #include "models/scene/scene_runner.hpp"
 
-#include "assembly/threads.hpp"
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -18,6 +16,7 @@
 #include "assembly/blas_workspace.hpp"
 #include "assembly/error.hpp"
 #include "assembly/point_locator.hpp"
+#include "assembly/processes.hpp"
 #include "assembly/threads.hpp"
 #include "bricks/law_registry.hpp"
 #include "models/model_state.hpp"
@@ -343,7 +342,9 @@ std::vector<std::pair<int, double>> restore_series(const Checkpoint& c) {
 FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) {
   const auto start = std::chrono::steady_clock::now();
   const std::string& dir = run_options.directory;
-  const bool progress = run_options.progress;
+  // Distributed, every process computes the same replicated results; one writes them and prints.
+  const bool writer = processes::is_writer();
+  const bool progress = run_options.progress && writer;
   const int steps_override = run_options.steps_override;
   const Scene& scene = scene_;
   const SceneFoundation& foundation = foundation_;
@@ -376,7 +377,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   options.output_every = scene.output.vtu_every;
   options.max_attempts = scene.max_attempts;
   options.max_wall_seconds = scene.max_wall_seconds;
-  options.checkpoint_every = dir.empty() ? 0 : scene.output.checkpoint_every;
+  options.checkpoint_every = dir.empty() || !writer ? 0 : scene.output.checkpoint_every;
   options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");
@@ -388,23 +389,28 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   std::unique_ptr<ResultSeries> series;
   if (!dir.empty()) {
     std::error_code error;
-    std::filesystem::create_directories(dir, error);
-    require(!error && std::filesystem::is_directory(dir), "cannot create the output directory '", dir, "' (--out): ",
-            error ? error.message() : "a file of that name is in the way");
-    series = std::make_unique<ResultSeries>(dir, scene.name, scene.output.vtu_format);
-    if (run_options.resume && std::filesystem::exists(checkpoint_path)) {
+    if (writer) {
+      std::filesystem::create_directories(dir, error);
+      require(!error && std::filesystem::is_directory(dir), "cannot create the output directory '", dir, "' (--out): ",
+              error ? error.message() : "a file of that name is in the way");
+      series = std::make_unique<ResultSeries>(dir, scene.name, scene.output.vtu_format);
+    }
+    // Every process resumes from the writer's checkpoint (the folder is shared), or none does.
+    if (processes::broadcast(run_options.resume && std::filesystem::exists(checkpoint_path))) {
       const Checkpoint checkpoint = read_checkpoint(checkpoint_path);
       require(checkpoint.text("foundation") == foundation.name, "--resume: '", checkpoint_path,
               "' is the checkpoint of the foundation '", checkpoint.text("foundation"), "'");
       restore_model_state(m, *built.scheme, checkpoint);
       options.resume = restore_stepper_state(checkpoint);
       restore_totals(checkpoint, result, earlier_wall_seconds);
-      history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_header, options.resume->steps));
-      series->continue_from(restore_series(checkpoint));
+      if (writer) {
+        history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_header, options.resume->steps));
+        series->continue_from(restore_series(checkpoint));
+      }
       if (progress)
         std::printf("  [%s] resumed at step %d, t = %.6g s, from %s\n", foundation.name.c_str(), options.resume->steps,
                     options.resume->time, checkpoint_path.c_str());
-    } else {
+    } else if (writer) {
       history = std::make_unique<CsvLog>(dir + "/history.csv", history_header);
       series->continue_from({});  // a series of an earlier run in this folder is not mixed in
       std::filesystem::remove(checkpoint_path, error);
@@ -507,7 +513,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       result.vtu_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
     });
   };
-  if (!dir.empty())
+  if (!dir.empty() && writer)
     callbacks.on_checkpoint = [&](const Model& model, const StepperState& state) {
       timed_output([&] {
         Checkpoint checkpoint;
@@ -534,7 +540,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     result.cutbacks = run.cutbacks;
     result.message = run.message;
     // A completed run has nothing to resume: its checkpoint would only be mistaken for a stopped run's.
-    if (run.completed && !dir.empty()) std::filesystem::remove(checkpoint_path);
+    if (run.completed && !dir.empty() && writer) std::filesystem::remove(checkpoint_path);
   } catch (const Error& e) {
     stopped_in_callback = true;
     result.message = e.what();
@@ -575,7 +581,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   // The final tables hold the final state, unless that is where a non-finite value appeared.
   if (!stopped_in_callback) {
     try {
-      timed_output([&] { write_final_tables(scene, built, locator, dir, result); });
+      timed_output([&] { write_final_tables(scene, built, locator, writer ? dir : "", result); });
     } catch (const Error& e) {
       if (std::string(e.what()).find("not finite") == std::string::npos) throw;
       result.completed = false;
@@ -589,7 +595,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     }
   result.wall_seconds =
       earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!dir.empty()) write_summary(scene, dir, result, steps);
+  if (!dir.empty() && writer) write_summary(scene, dir, result, steps);
   return result;
 }
 
@@ -618,15 +624,18 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
   bool all_completed = true;
   std::string stop_reason;
   const std::string& out = options.output_directory;
+  // Distributed, the writer process keeps the folder, its lock and its manifest; the others compute.
+  const bool writer = processes::is_writer();
+  const bool progress = options.progress && writer;
   // Before the first step: a directory that cannot be written or is in use costs no computing.
   std::unique_ptr<OutputDirectoryLock> lock;
   std::unique_ptr<RunManifest> manifest;
-  if (!out.empty()) {
+  if (!out.empty() && writer) {
     lock = std::make_unique<OutputDirectoryLock>(out);
     manifest = std::make_unique<RunManifest>(options.resume ? RunManifest::resume(out, scene)
                                                             : RunManifest::start(out, scene));
     report_folder_cleaning(*manifest, options.progress);
-  } else {
+  } else if (out.empty()) {
     require(!options.resume, "--resume needs the output directory (--out) of the run to resume");
   }
   auto stopped = [&](const std::string& part, const std::string& reason) {
@@ -638,19 +647,19 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
     for (const SceneFoundation& f : scene.foundations) {
       if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), f.name) == options.only.end())
         continue;
-      if (const char* reason = interrupt_reason()) {  // an interrupted run starts nothing new
+      if (const std::string reason = agreed_interrupt_reason(); !reason.empty()) {  // nothing new starts
         stopped(f.name, message("not started: ", reason));
         break;
       }
-      if (manifest && options.resume && manifest->part_state(f.name) == "completed") {
-        if (options.progress) std::printf("%s, %s foundation: completed before, kept\n", scene.name.c_str(), f.name.c_str());
+      if (processes::broadcast(manifest && options.resume && manifest->part_state(f.name) == "completed")) {
+        if (progress) std::printf("%s, %s foundation: completed before, kept\n", scene.name.c_str(), f.name.c_str());
         continue;
       }
-      if (options.progress) std::printf("%s, %s foundation: %s\n", scene.name.c_str(), f.name.c_str(), scene.mesh_description.c_str());
+      if (progress) std::printf("%s, %s foundation: %s\n", scene.name.c_str(), f.name.c_str(), scene.mesh_description.c_str());
       FoundationRunOptions run;
+      if (!out.empty()) run.directory = out + "/" + f.name;
       if (manifest) {
         manifest->set_part(f.name, "running");
-        run.directory = out + "/" + f.name;
         run.after_checkpoint = [&] { manifest->save(); };
       }
       run.progress = options.progress;
@@ -661,10 +670,10 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
       if (!r.completed) {
         stopped(f.name, r.message.empty() ? "(no message)" : r.message);
         std::fflush(stdout);
-        std::fprintf(stderr, "%s, %s foundation: STOPPED after %d steps: %s\n", scene.name.c_str(), f.name.c_str(),
+        if (writer) std::fprintf(stderr, "%s, %s foundation: STOPPED after %d steps: %s\n", scene.name.c_str(), f.name.c_str(),
                      r.steps, r.message.empty() ? "(no message)" : r.message.c_str());
       }
-      if (options.progress)
+      if (progress)
         std::printf("  %s: %s in %.2f s (VTU output %.2f s), %d Newton iterations (max %d per step); max|ux| = %.4g m, "
                     "max|uy| = %.4g m%s, phi in [%.4g, %.4g] V%s\n",
                     f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.vtu_seconds,
@@ -680,13 +689,14 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
     const auto swept = std::find_if(scene.foundations.begin(), scene.foundations.end(), [](const SceneFoundation& f) {
       return find_parameter(foundation_law_registry().at(f.law.name, "foundation").parameters, "phi_f") != nullptr;
     });
-    const bool sweep_done_before = manifest && options.resume && manifest->part_state(sweep_part) == "completed";
+    const bool sweep_done_before =
+        processes::broadcast(manifest && options.resume && manifest->part_state(sweep_part) == "completed");
     if (options.sweep && !scene.output.phi_f_sweep.empty() && swept != scene.foundations.end() && !out.empty() &&
         !sweep_done_before) {
-      if (const char* reason = interrupt_reason()) {
+      if (const std::string reason = agreed_interrupt_reason(); !reason.empty()) {
         stopped(sweep_part, message("not started: ", reason));
       } else {
-        manifest->set_part(sweep_part, "running");
+        if (manifest) manifest->set_part(sweep_part, "running");
         FoundationRun sweep(scene, *swept);
         std::vector<std::vector<double>> rows;
         bool sweep_completed = true;
@@ -698,14 +708,17 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
             sweep_completed = false;
             sweep_message = message("phi_f = ", phi_f, " V: ", r.message);
             stopped(sweep_part, sweep_message);
-            std::fprintf(stderr, "%s, sweep phi_f = %g V: STOPPED: %s\n", scene.name.c_str(), phi_f, r.message.c_str());
+            if (writer)
+              std::fprintf(stderr, "%s, sweep phi_f = %g V: STOPPED: %s\n", scene.name.c_str(), phi_f, r.message.c_str());
           }
           rows.push_back({phi_f, r.max_abs_ux, r.max_abs_uy, r.ux_corner, r.uy_corner});
-          if (options.progress)
+          if (progress)
             std::printf("  sweep phi_f = %g V: max|ux| = %.4g m, max|uy| = %.4g m\n", phi_f, r.max_abs_ux, r.max_abs_uy);
-          write_finite_csv(out + "/sweep_phi_f.csv", {"phi_f", "max_abs_ux", "max_abs_uy", "ux_corner", "uy_corner"}, rows);
+          if (writer)
+            write_finite_csv(out + "/sweep_phi_f.csv", {"phi_f", "max_abs_ux", "max_abs_uy", "ux_corner", "uy_corner"},
+                             rows);
         }
-        manifest->set_part(sweep_part, sweep_completed ? "completed" : "stopped", sweep_message);
+        if (manifest) manifest->set_part(sweep_part, sweep_completed ? "completed" : "stopped", sweep_message);
       }
     }
   } catch (const std::exception& e) {

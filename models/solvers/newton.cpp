@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 
 namespace pc {
 namespace {
@@ -60,11 +61,20 @@ NewtonSolver::NewtonSolver(NewtonOptions options)
   require(options_.watchdog >= 0, "Newton: watchdog must be >= 0, got ", options_.watchdog);
   require(options_.backtrack_factor > 0 && options_.backtrack_factor < 1, "Newton: backtrack_factor must be in (0, 1), got ",
           options_.backtrack_factor);
-  linear_ = make_linear_solver(options_.linear_solver);
+  linear_ = make_model_solver(options_.linear_solver);
 }
 
 LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
   if (options_.condensed_max_fraction <= 0) return LinearStrategy::Full;
+  // The condensed and Krylov paths factorise and multiply a whole matrix of this process; a distributed
+  // model has one share of it per process, which only MUMPS's distributed input sums.
+  if (processes::distributed()) {
+    if (named_strategy_ != LinearStrategy::Full && explanation_.empty())
+      explanation_ = message("distributed over ", processes::count(), " processes: a factorisation of J per "
+                             "iteration, by MUMPS from each process's share (solver.condensation = '",
+                             to_string(named_strategy_), "' needs the whole matrix on one process)");
+    return LinearStrategy::Full;
+  }
   if (named_strategy_ == LinearStrategy::Krylov) return LinearStrategy::Krylov;
   if (named_strategy_ != LinearStrategy::Auto) return condensed_.applies(problem) ? condensed_.method() : LinearStrategy::Full;
   // auto: where most dofs are nonlinear, J changes everywhere and only a factorisation per iteration applies.

@@ -1,0 +1,220 @@
+// The runner of the MPI build as a user launches it, `mpirun -np N piezocontact run SCENE`, against the same
+// runner on one process: every output field (each VTU array at every output step, each CSV column)
+// equal to 1e-10 of its size over the run (see expect_same_results for the one field the serial code
+// resolves more coarsely), the same Newton iterations, and the solvers that cannot take a distributed
+// matrix refused or replaced with a reason.
+//
+// "Its size over the run": a field's largest magnitude in any output step. A field's value near rest
+// (the final velocity, 1e-5 of its size during the transient) is a difference of nearly equal numbers,
+// which two serial runs by two linear solvers already tell apart at 1e-7 of its own size.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/error_and_temp_dir.hpp"
+#include "support/shipped_scenes.hpp"
+#include "support/vtu_reader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kRelativeTolerance = 1e-10;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct Outcome {
+  int status = -1;
+  std::string log;
+};
+
+// The largest difference and the largest magnitude of a field over a run.
+struct Spread {
+  double difference = 0;
+  double size = 0;
+};
+using Spreads = std::map<std::string, Spread>;
+
+void add(Spreads& spreads, const std::string& field, const std::vector<double>& a, const std::vector<double>& b) {
+  ASSERT_EQ(a.size(), b.size()) << field;
+  Spread& s = spreads[field];
+  for (size_t i = 0; i < a.size(); ++i) {
+    s.difference = std::max(s.difference, std::abs(a[i] - b[i]));
+    s.size = std::max(s.size, std::abs(a[i]));
+  }
+}
+
+// The field a CSV column holds: ux, uy_corner -> u; vx -> v; phi, phi_center, phi_mean -> phi; others are
+// their own (coordinates, times, iteration counts: compared at their own size).
+std::string field_of_column(const std::string& column) {
+  if (column.rfind("phi", 0) == 0) return "phi";
+  if ((column[0] == 'u' || column[0] == 'v') && column.size() >= 2 && std::string("xyz").find(column[1]) != std::string::npos)
+    return std::string(1, column[0]);
+  return "column " + column;
+}
+
+std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(read_text(path));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+void compare_csv(const fs::path& a, const fs::path& b, Spreads& spreads) {
+  const auto ra = read_csv(a), rb = read_csv(b);
+  ASSERT_FALSE(ra.empty()) << a;
+  ASSERT_EQ(ra.size(), rb.size()) << a;
+  ASSERT_EQ(ra[0], rb[0]) << a;
+  for (size_t c = 0; c < ra[0].size(); ++c) {
+    std::vector<double> va, vb;
+    for (size_t r = 1; r < ra.size(); ++r) {
+      va.push_back(std::stod(ra[r][c]));
+      vb.push_back(std::stod(rb[r][c]));
+    }
+    add(spreads, field_of_column(ra[0][c]), va, vb);
+  }
+}
+
+void compare_vtu(const fs::path& a, const fs::path& b, Spreads& spreads) {
+  const std::string ta = read_text(a), tb = read_text(b);
+  for (const char* section : {"PointData", "CellData"}) {
+    const auto names = pc::testing::array_names(ta, section);
+    ASSERT_EQ(names, pc::testing::array_names(tb, section)) << a;
+    for (const std::string& name : names)
+      add(spreads, name, pc::testing::find_array(ta, section, name).doubles(),
+          pc::testing::find_array(tb, section, name).doubles());
+  }
+}
+
+// Every field of runs a and b over the run: their largest difference and a's size.
+Spreads compare_runs(const fs::path& a, const fs::path& b) {
+  Spreads spreads;
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(a)) {
+    const fs::path relative = fs::relative(entry.path(), a);
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".csv" && ext != ".vtu") continue;
+    EXPECT_TRUE(fs::exists(b / relative)) << relative << " is missing from " << b;
+    if (!fs::exists(b / relative)) continue;
+    if (ext == ".csv") compare_csv(entry.path(), b / relative, spreads);
+    if (ext == ".vtu") compare_vtu(entry.path(), b / relative, spreads);
+    ++files;
+  }
+  EXPECT_GT(files, 10) << "the runs wrote too few results to compare";
+  for (const char* part : {"conductive", "insulated"}) {
+    if (!fs::exists(a / part / "summary.json")) continue;
+    const std::string sa = read_text(a / part / "summary.json"), sb = read_text(b / part / "summary.json");
+    const auto number = [](const std::string& s, const std::string& key) {
+      const size_t at = s.find("\"" + key + "\": ");
+      return at == std::string::npos ? std::string("missing") : s.substr(at, s.find_first_of(",\n", at) - at);
+    };
+    EXPECT_EQ(number(sa, "completed"), "\"completed\": true") << part;
+    EXPECT_EQ(number(sa, "completed"), number(sb, "completed")) << part;
+    EXPECT_EQ(number(sa, "newton_iterations_total"), number(sb, "newton_iterations_total")) << part;
+  }
+  return spreads;
+}
+
+// Every result of the distributed run agrees with the serial one to kRelativeTolerance of its size, or, for
+// a field that the serial code itself only resolves more coarsely, as closely as two serial runs by two
+// linear-solver routes agree (`serial_spread`, with a margin of 4): the conductive contact pressure
+// c_nu v_nu, read off a velocity near rest, differs by 4e-8 between the Schur and the full route.
+void expect_same_results(const fs::path& serial, const fs::path& distributed, const Spreads& serial_spread) {
+  for (const auto& [field, s] : compare_runs(serial, distributed)) {
+    const auto other = serial_spread.find(field);
+    const double resolution = other == serial_spread.end() ? 0.0 : 4 * other->second.difference;
+    EXPECT_LE(s.difference, std::max(kRelativeTolerance * s.size, resolution))
+        << field << ": differs by " << s.difference << ", size " << s.size << " (" << s.difference / s.size
+        << " relative; two serial routes differ by " << resolution / 4 << ")";
+  }
+}
+
+class DistributedRuns : public pc::testing::TemporaryDirectoryTest {
+ protected:
+  // The runner on `processes` processes (1: without mpirun), with its stdout and stderr in the log.
+  Outcome run(int processes, const std::string& arguments) {
+    const fs::path log = directory_ / "log.txt";
+    std::string command;
+    if (processes > 1)
+      command = std::string(PIEZOCONTACT_MPIEXEC) + " -np " + std::to_string(processes) + " --oversubscribe ";
+    command += std::string(PIEZOCONTACT_RUNNER) + " " + arguments + " >'" + log.string() + "' 2>&1";
+    const int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(log)};
+  }
+
+  void SetUp() override {
+    TemporaryDirectoryTest::SetUp();
+    // OpenMPI refuses root without these (CI runs as root); they change nothing for other users.
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    setenv("PIEZOCONTACT_THREADS", "1", 1);  // 2 cores: processes, not threads
+  }
+};
+
+TEST_F(DistributedRuns, PaperSceneOnTwoAndThreeProcessesEqualsOneProcess) {
+  const std::string scene = "run " + pc::testing::kPaperScene + " --no-sweep --quiet --out ";
+  const fs::path one = directory_ / "one", full = directory_ / "full", two = directory_ / "two",
+                 three = directory_ / "three";
+  const Outcome serial = run(1, scene + one.string());
+  ASSERT_EQ(serial.status, 0) << serial.log;
+  const Outcome serial_full = run(1, scene + full.string() + " --set solver.condensed=false");
+  ASSERT_EQ(serial_full.status, 0) << serial_full.log;
+  const Outcome on_two = run(2, scene + two.string());
+  ASSERT_EQ(on_two.status, 0) << on_two.log;
+  const Outcome on_three = run(3, scene + three.string());
+  ASSERT_EQ(on_three.status, 0) << on_three.log;
+  const Spreads serial_spread = compare_runs(one, full);
+  expect_same_results(one, two, serial_spread);
+  expect_same_results(one, three, serial_spread);
+}
+
+TEST_F(DistributedRuns, BoxSceneOnTwoProcessesEqualsOneProcess) {
+  const std::string scene = "run " + pc::testing::kBoxScene + " --quiet --set time.steps=20 --set time.T=0.08 --out ";
+  const fs::path one = directory_ / "one", two = directory_ / "two";
+  const Outcome serial = run(1, scene + one.string());
+  ASSERT_EQ(serial.status, 0) << serial.log;
+  const Outcome on_two = run(2, scene + two.string());
+  ASSERT_EQ(on_two.status, 0) << on_two.log;
+  expect_same_results(one, two, {});
+}
+
+// A condensed path the scene names cannot run distributed: the run says so and factorises J instead.
+TEST_F(DistributedRuns, CondensedPathIsReplacedWithAReason) {
+  const Outcome o = run(2, "run " + pc::testing::kPaperScene + " --no-sweep --only insulated --set time.steps=4 " +
+                               "--set solver.condensation=schur --out " + (directory_ / "out").string());
+  ASSERT_EQ(o.status, 0) << o.log;
+  EXPECT_NE(o.log.find("distributed over 2 processes: a factorisation of J per iteration"), std::string::npos) << o.log;
+  EXPECT_NE(read_text(directory_ / "out" / "insulated" / "summary.json").find("distributed over 2 processes"),
+            std::string::npos);
+}
+
+// A solver of one process's matrix is refused before any step, naming the key, the value and the fix.
+TEST_F(DistributedRuns, ASolverOfOneProcessIsRefused) {
+  const Outcome o = run(2, "run " + pc::testing::kPaperScene + " --no-sweep --set solver.linear=umfpack --out " +
+                               (directory_ / "out").string());
+  EXPECT_NE(o.status, 0);
+  EXPECT_NE(o.log.find("solver.linear = 'umfpack' factorises a matrix of one process, but this run is distributed "
+                       "over 2 processes; use 'mumps'"),
+            std::string::npos)
+      << o.log;
+}
+
+}  // namespace
