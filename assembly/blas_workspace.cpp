@@ -1,6 +1,9 @@
 #include "assembly/blas_workspace.hpp"
 
+#include <cstdlib>
 #include <mutex>
+
+#include "assembly/error.hpp"
 
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
                        const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,
@@ -11,6 +14,14 @@ namespace pc {
 void reserve_blas_workspace() {
   static std::once_flag once;
   std::call_once(once, [] {
+    // OpenBLAS's buffer (BUFFER_SIZE, 128 MiB on x86-64, and a page): if memory that large cannot be had
+    // now, the product below would retry for ever; an error names the shortage instead.
+    constexpr std::size_t kBufferBytes = (std::size_t(128) << 20) + (std::size_t(64) << 10);
+    void* probe = std::malloc(kBufferBytes);
+    if (probe == nullptr)
+      throw OutOfMemory("out of memory while reserving the BLAS's work buffer (128 MiB), before the model is built: "
+                        "free memory, or raise the process's limit (ulimit -v)");
+    std::free(probe);
     // Large enough that no small-matrix shortcut of the BLAS skips its buffer.
     constexpr int n = 64;
     static double a[n * n], b[n * n], c[n * n];

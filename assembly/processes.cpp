@@ -57,8 +57,12 @@ void sum(std::span<double> values) {
   if (count() > 1) MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_SUM, world());
 }
 
+void max(std::span<double> values) {
+  if (count() > 1) MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, world());
+}
+
 double max(double value) {
-  if (count() > 1) MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, world());
+  max(std::span<double>(&value, 1));
   return value;
 }
 
@@ -110,6 +114,7 @@ void initialize(int*, char***) {}
 int rank() { return 0; }
 int count() { return 1; }
 void sum(std::span<double>) {}
+void max(std::span<double>) {}
 double max(double value) { return value; }
 bool any(bool value) { return value; }
 void broadcast(std::span<double>, int) {}

@@ -19,8 +19,9 @@ int count();
 inline bool distributed() { return count() > 1; }
 inline bool is_writer() { return rank() == 0; }  // the process that writes files and prints
 
-// In place, over all processes: element-wise sums, maxima and logical or.
+// Over all processes: element-wise sums and maxima (in place), the largest value, logical or.
 void sum(std::span<double> values);
+void max(std::span<double> values);
 double max(double value);
 bool any(bool value);
 // Rank `root`'s values, on every process.

@@ -16,10 +16,10 @@ class MumpsSolver final : public SolverBase {
   // Distributed over several processes, each matrix() is one process's share of the sum MUMPS factorises.
   bool takes_shares() const override { return mumps_.distributed(); }
 
-  // LDL^T when a row scale makes the matrix symmetric, LU otherwise: decided on the values at hand.
-  // Distributed, LU: a process's share alone cannot tell a scale that holds for the sum.
+  // LDL^T when a row scale makes the matrix symmetric, LU otherwise: decided on the values at hand (of
+  // the sum of the shares, when distributed).
   void analyze_pattern() override {
-    if (!mumps_.distributed()) symmetrizer_.emplace(matrix());
+    symmetrizer_.emplace(matrix());
     find_scale();
     analyze_for_scale();
   }
@@ -47,7 +47,7 @@ class MumpsSolver final : public SolverBase {
   }
 
   void find_scale() {
-    if (symmetrizer_) scale_ = symmetrizer_->scale(matrix());
+    scale_ = mumps_.distributed() ? symmetrizer_->scale_of_shares(matrix()) : symmetrizer_->scale(matrix());
   }
 
   // The right-hand side array is overwritten with the solution (of diag(s) A x = diag(s) b for LDL^T).

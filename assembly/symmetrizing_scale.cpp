@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "assembly/error.hpp"
+#include "assembly/processes.hpp"
 
 namespace pc {
 namespace {
@@ -39,6 +41,11 @@ bool RowSymmetrizer::has_pattern(const CsrMatrix& a) const {
 }
 
 std::optional<Eigen::VectorXd> RowSymmetrizer::scale(const CsrMatrix& a, double tolerance) const {
+  return scale(a, tolerance, nullptr);
+}
+
+std::optional<Eigen::VectorXd> RowSymmetrizer::scale(const CsrMatrix& a, double tolerance,
+                                                     std::vector<int>* component) const {
   require(has_pattern(a), "RowSymmetrizer: the matrix (", a.rows(), " x ", a.cols(), ", ", a.nonZeros(),
           " entries) does not have the pattern it was made for (", rows_, " rows, ", nonzeros_, " entries)");
   if (mirror_.empty() && nonzeros_ > 0) return std::nullopt;
@@ -63,12 +70,14 @@ std::optional<Eigen::VectorXd> RowSymmetrizer::scale(const CsrMatrix& a, double 
     return value[k] != 0 && value[mirror[k]] != 0 &&
            (std::abs(value[k]) >= kStrongShare * row_max[i] || std::abs(value[mirror[k]]) >= kStrongShare * row_max[j]);
   };
+  if (component) component->assign(size_t(n), -1);
   for (int root = 0; root < n; ++root) {
     if (s[root] != 0) continue;
     s[root] = 1;
     queue.assign(1, root);
     for (size_t head = 0; head < queue.size(); ++head) {
       const int i = queue[head];
+      if (component) (*component)[size_t(i)] = root;
       for (int k = start[i]; k < start[i + 1]; ++k) {
         const int j = column[k];
         if (s[j] != 0 || !strong(i, k)) continue;
@@ -78,14 +87,71 @@ std::optional<Eigen::VectorXd> RowSymmetrizer::scale(const CsrMatrix& a, double 
       }
     }
   }
+  if (!symmetric_with(a, s, tolerance)) return std::nullopt;
+  return s;
+}
+
+bool RowSymmetrizer::symmetric_with(const CsrMatrix& a, const Eigen::VectorXd& s, double tolerance) const {
+  if (mirror_.empty() && nonzeros_ > 0) return false;
+  const int n = int(a.rows());
+  const int* start = a.outerIndexPtr();
+  const int* column = a.innerIndexPtr();
+  const double* value = a.valuePtr();
+  std::vector<double> row_max(n, 0);
+  for (int i = 0; i < n; ++i)
+    for (int k = start[i]; k < start[i + 1]; ++k) row_max[i] = std::max(row_max[i], std::abs(value[k]));
   for (int i = 0; i < n; ++i)
     for (int k = start[i]; k < start[i + 1]; ++k) {
       const int j = column[k];
       if (j <= i) continue;
-      const double gap = std::abs(s[i] * value[k] - s[j] * value[mirror[k]]);
-      if (gap > tolerance * std::max(std::abs(s[i]) * row_max[i], std::abs(s[j]) * row_max[j])) return std::nullopt;
+      const double gap = std::abs(s[i] * value[k] - s[j] * value[mirror_[k]]);
+      if (!(gap <= tolerance * std::max(std::abs(s[i]) * row_max[i], std::abs(s[j]) * row_max[j]))) return false;
     }
-  return s;
+  return true;
+}
+
+std::optional<Eigen::VectorXd> RowSymmetrizer::scale_of_shares(const CsrMatrix& share, double tolerance) const {
+  const int n = int(share.rows());
+  std::vector<int> component;
+  std::optional<Eigen::VectorXd> s = scale(share, tolerance, &component);
+  // A row that a share links to another by a strong pair carries that share's view of its scale; each
+  // component's is fixed up to a factor, given by its lowest row of the largest |s| (the same field's rows
+  // on every process, for the block-wise constant scales of coupled fields).
+  std::vector<int> size(size_t(n), 0);
+  for (int root : component) ++size[size_t(root)];
+  const auto carries = [&](int row) { return size[size_t(component[size_t(row)])] > 1; };
+  if (s) {
+    std::vector<double> pivot(size_t(n), 0.0);  // by component root
+    for (int i = 0; i < n; ++i) {
+      double& p = pivot[size_t(component[size_t(i)])];
+      if (carries(i) && std::abs((*s)[i]) > std::abs(p) * (1 + tolerance)) p = (*s)[i];
+    }
+    for (int i = 0; i < n; ++i)
+      if (const double p = pivot[size_t(component[size_t(i)])]; p != 0) (*s)[i] /= p;
+  }
+  // Every process joins the same reductions, found scale or not: the largest of the shares' values and the
+  // largest of their negatives (the smallest), row by row, over the shares whose rows carry it.
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  std::vector<double> high(size_t(n), kNone), low(size_t(n), kNone);
+  if (s)
+    for (int i = 0; i < n; ++i)
+      if (carries(i)) high[size_t(i)] = (*s)[i], low[size_t(i)] = -(*s)[i];
+  if (processes::any(!s)) return std::nullopt;
+  processes::max(high);
+  processes::max(low);
+  Eigen::VectorXd agreed = Eigen::VectorXd::Ones(n);
+  bool agree = true;  // the same rows on every process: the same verdict
+  for (int i = 0; i < n && agree; ++i) {
+    if (high[size_t(i)] == kNone) continue;  // no share links the row: any scale does
+    const double lowest = -low[size_t(i)];
+    agree = high[size_t(i)] - lowest <= tolerance * std::max(std::abs(high[size_t(i)]), std::abs(lowest));
+    agreed[i] = high[size_t(i)];
+  }
+  if (!agree) return std::nullopt;
+  // The rows a share holds by weak entries only took a scale from the others: each share is checked with
+  // the agreed one.
+  if (processes::any(!symmetric_with(share, agreed, tolerance))) return std::nullopt;
+  return agreed;
 }
 
 std::optional<Eigen::VectorXd> symmetrizing_row_scale(const CsrMatrix& a, double tolerance) {

@@ -32,8 +32,21 @@ class RowSymmetrizer {
   // whose scale is 1; rows without off-diagonal entries keep 1. Signs may differ from row to row (an
   // indefinite symmetric matrix is fine).
   std::optional<Eigen::VectorXd> scale(const CsrMatrix& a, double tolerance = 1e-12) const;
+  // Collective (assembly/processes.hpp): the scale of the sum of the processes' shares of a matrix, each
+  // process giving its own (made for this pattern), the same scale on every process, or nullopt on every
+  // process. Each share's scale, normalised by the value of its lowest row of the largest magnitude, must
+  // agree with every other share's on the rows they both hold (to `tolerance`), each connected component
+  // of a share normalised on its own; rows that a share holds without a strong pair (at its edge) take
+  // the others' value. Each share is then checked with the agreed scale, so that the sum is symmetric
+  // with it. On one process, scale(share) normalised so.
+  std::optional<Eigen::VectorXd> scale_of_shares(const CsrMatrix& share, double tolerance = 1e-12) const;
 
  private:
+  // scale(), and the component of each row: the row whose scale was set to 1.
+  std::optional<Eigen::VectorXd> scale(const CsrMatrix& a, double tolerance, std::vector<int>* component) const;
+  // Whether every entry pair of `a` agrees under the scale s, to `tolerance` of the larger scaled row.
+  bool symmetric_with(const CsrMatrix& a, const Eigen::VectorXd& s, double tolerance) const;
+
   long rows_ = 0, nonzeros_ = 0;
   std::vector<int> mirror_;  // the slot of (j, i) for the slot of (i, j); empty: the pattern is not symmetric
 };

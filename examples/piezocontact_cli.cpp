@@ -150,6 +150,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "error: writing the results into --out '%s' failed: %s\n", options.output_directory.c_str(),
                  e.what());
     return failed();
+  } catch (const pc::OutOfMemory& e) {  // what ran out of memory, where the library could tell
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return failed();
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: out of memory (std::bad_alloc): the scene needs more memory than the machine has\n");
     return failed();

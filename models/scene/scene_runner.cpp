@@ -619,7 +619,6 @@ const char* const sweep_part = "sweep_phi_f";
 }  // namespace
 
 bool run_scene(const Scene& scene, const SceneRunOptions& options) {
-  reserve_blas_workspace();  // now, while memory is plentiful (assembly/blas_workspace.hpp)
   set_assembly_threads(scene.threads);  // 0: PIEZOCONTACT_THREADS or the cores
   bool all_completed = true;
   std::string stop_reason;
@@ -644,6 +643,7 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
   };
   // Whatever stops the run, its manifest says so: an error (a full disk) is recorded before it goes on up.
   try {
+    reserve_blas_workspace();  // now, while memory is plentiful (assembly/blas_workspace.hpp)
     for (const SceneFoundation& f : scene.foundations) {
       if (!options.only.empty() && std::find(options.only.begin(), options.only.end(), f.name) == options.only.end())
         continue;

@@ -55,6 +55,34 @@ TEST(SymmetrizingRowScale, UndoesTheTimeSchemeFactorOfThePiezoelectricGaussLaw) 
   EXPECT_LT(asymmetry(a, *s), 1e-15);
 }
 
+// The scale of the sum of the processes' shares (on one process, the whole matrix is the one share): each
+// component normalised by its row of the largest scale, so that every share of a distributed matrix
+// gives the same numbers on the rows it holds. Distributed, tests/mpi/ run it on 2 and 3 processes.
+TEST(SymmetrizingRowScale, TheScaleOfSharesIsNormalisedByItsLargestRow) {
+  const int m = 5, n = m * m;
+  const double c = 1e-3;
+  Triplets t;
+  for (const auto& e : stencil_2d(m, 0.0)) {
+    t.emplace_back(e.row(), e.col(), 1e9 * e.value());
+    t.emplace_back(n + e.row(), n + e.col(), -1e-8 * e.value());
+  }
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, n + i, 17.0);
+    t.emplace_back(n + i, i, c * 17.0);
+  }
+  const CsrMatrix a = from_triplets(2 * n, 2 * n, t);
+  const RowSymmetrizer symmetrizer(a);
+  const std::optional<Eigen::VectorXd> s = symmetrizer.scale_of_shares(a);
+  ASSERT_TRUE(s.has_value());
+  for (int i = 0; i < n; ++i) EXPECT_NEAR((*s)[i], c, 1e-17) << i;
+  for (int i = n; i < 2 * n; ++i) EXPECT_NEAR((*s)[i], 1.0, 1e-12) << i;
+  EXPECT_LT(asymmetry(a, *s), 1e-15);
+  // Values that lose the symmetry: no scale, as scale() says.
+  CsrMatrix b = a;
+  b.coeffRef(0, n) *= 1.5;
+  EXPECT_FALSE(RowSymmetrizer(b).scale_of_shares(b).has_value());
+}
+
 TEST(SymmetrizingRowScale, GivesEachConnectedComponentItsOwnScale) {
   // Two uncoupled weighted Laplacians: each component's first row keeps the scale 1.
   const CsrMatrix block = laplacian_2d(4);

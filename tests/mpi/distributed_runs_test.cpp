@@ -8,7 +8,9 @@
 // (the final velocity, 1e-5 of its size during the transient) is a difference of nearly equal numbers,
 // which two serial runs by two linear solvers already tell apart at 1e-7 of its own size.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +20,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "support/error_and_temp_dir.hpp"
@@ -194,6 +197,49 @@ TEST_F(DistributedRuns, BoxSceneOnTwoProcessesEqualsOneProcess) {
   const Outcome on_two = run(2, scene + two.string());
   ASSERT_EQ(on_two.status, 0) << on_two.log;
   expect_same_results(one, two, {});
+}
+
+// A distributed run stopped by SIGTERM (a batch system's first signal, which mpirun hands to every process)
+// stops on all processes after the same step, with its checkpoint; resumed under mpirun, it ends with the
+// results of a run that was never stopped. Two distributed runs agree to round-off, not bit for bit (MUMPS
+// sums the processes' entries in the order they arrive).
+TEST_F(DistributedRuns, AStoppedRunResumesToTheResultsOfAnUninterruptedOne) {
+  const std::string scene = "run " + pc::testing::kPaperScene +
+                            " --only insulated --no-sweep --quiet --set time.steps=1500 --set time.T=1.5 "
+                            "--set output.checkpoint_every=25 --set output.vtu_every=100 --out ";
+  const fs::path whole = directory_ / "whole", stopped = directory_ / "stopped";
+  const Outcome reference = run(2, scene + whole.string());
+  ASSERT_EQ(reference.status, 0) << reference.log;
+
+  const std::string command = std::string(PIEZOCONTACT_MPIEXEC) + " -np 2 --oversubscribe " + PIEZOCONTACT_RUNNER +
+                              " " + scene + stopped.string() + " >'" + (directory_ / "stopped.txt").string() + "' 2>&1";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const fs::path history = stopped / "insulated" / "history.csv";
+  for (int i = 0; i < 1200 && (!fs::exists(history) || read_text(history).size() < 300 * 40); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // some 300 steps in
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "mpirun did not exit after SIGTERM";
+  ASSERT_EQ(WEXITSTATUS(status), 1) << "the run was not stopped (it ended first?): " << read_text(directory_ / "stopped.txt");
+  EXPECT_NE(read_text(directory_ / "stopped.txt").find("interrupted by SIGTERM"), std::string::npos);
+  EXPECT_TRUE(fs::exists(stopped / "insulated" / "checkpoint.bin"));
+  const std::string rows = read_text(history);
+  const size_t rows_at_stop = std::count(rows.begin(), rows.end(), '\n');
+  EXPECT_LT(rows_at_stop, 1500u);
+
+  const Outcome resumed = run(2, scene + stopped.string() + " --resume");
+  ASSERT_EQ(resumed.status, 0) << resumed.log;
+  for (const auto& [field, s] : compare_runs(whole, stopped))
+    EXPECT_LE(s.difference, kRelativeTolerance * s.size) << field << ": differs by " << s.difference << ", size " << s.size;
+  const std::string manifest = read_text(stopped / "manifest.json");
+  EXPECT_NE(manifest.find("\"resumes\": 1"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"state\": \"completed\""), std::string::npos) << manifest;
 }
 
 // A condensed path the scene names cannot run distributed: the run says so and factorises J instead.
