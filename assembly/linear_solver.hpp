@@ -19,6 +19,10 @@ struct FactorEstimate {
   double entries = 0;      // read by a forward and backward substitution: L and U, or L twice (LL^T, LDL^T)
   double flops = 0;        // of the numeric factorisation
   bool symmetric = false;  // a symmetric factorisation (LL^T, LDL^T), of half the memory of `entries`
+  // The solver's own prediction of its in-core working memory, factors included: of all processes and of
+  // the largest (MUMPS's INFOG(17) and INFOG(16)); 0 where the back end does not tell.
+  double memory_bytes = 0;
+  double largest_process_memory_bytes = 0;
 };
 
 class LinearSolver {

@@ -34,6 +34,9 @@ class MumpsSolver final : public SolverBase {
     // twice); RINFOG(1): flops of the elimination.
     const double stored = mumps_->infog[19] < 0 ? -1e6 * mumps_->infog[19] : mumps_->infog[19];
     estimate_ = {scale_ ? 2 * stored : stored, mumps_->rinfog[0], bool(scale_)};
+    // INFOG(17), INFOG(16): megabytes of all processes, of the largest.
+    estimate_.memory_bytes = 1e6 * mumps_->infog[16];
+    estimate_.largest_process_memory_bytes = 1e6 * mumps_->infog[15];
   }
   FactorEstimate factor_estimate() const override { return estimate_; }
 

@@ -2,7 +2,8 @@
 # Strong scaling of a distributed run on this machine: the same scene on 1 and 2 MPI processes (one thread
 # each) and on 1 process with 2 threads, each a fresh `mpirun` under /usr/bin/time, so that every process's
 # peak resident memory is measured. Per run: processes, threads, dofs, wall time of the run, the phases
-# (summary.json), and the largest and the summed peak memory of its processes.
+# (summary.json), the largest and the summed peak memory of its processes, and MUMPS's own prediction of
+# its memory (INFOG(16), INFOG(17): the largest process, all; with solver.condensed=false).
 # Writes OUT/distributed_scaling.csv and prints it as a markdown table.
 #   benchmarks/distributed_scaling.sh [runner = build/mpi/examples/piezocontact] [out = results/distributed_scaling]
 #                                     [scene = scenes/box3d.json] [runner arguments ...]
@@ -18,14 +19,16 @@ extra=("$@")
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 csv=$out/distributed_scaling.csv
-echo "processes,threads,dofs,wall_s,factorize_s,solve_s,assembly_residual_s,peak_rss_mb_max,peak_rss_mb_sum" > "$csv"
+echo "processes,threads,dofs,wall_s,factorize_s,solve_s,assembly_residual_s,peak_rss_mb_max,peak_rss_mb_sum,mumps_mb_largest,mumps_mb_all" > "$csv"
 for config in "1 1" "2 1" "1 2"; do
   read -r processes threads <<< "$config"
   run=$out/np${processes}_t${threads}
   rm -rf "$run" && mkdir -p "$run"
   echo "== $processes processes x $threads threads" >&2
+  # Each process under its own /usr/bin/time, its file named by its rank.
+  # shellcheck disable=SC2016  # expanded by the inner shell, per process
   PIEZOCONTACT_THREADS=$threads mpirun -np "$processes" --oversubscribe \
-    /usr/bin/time -f "%M" -o "$run/rss.%q{OMPI_COMM_WORLD_RANK}" \
+    sh -c 'exec /usr/bin/time -f "%M" -o "$0/rss.$OMPI_COMM_WORLD_RANK" "$@"' "$run" \
     "$runner" run "$scene" --quiet --no-sweep --out "$run/out" "${extra[@]}" >&2
   python3 - "$run" "$processes" "$threads" >> "$csv" <<'PY'
 import glob, json, sys
@@ -33,8 +36,10 @@ run, processes, threads = sys.argv[1:]
 rss = [int(open(f).read().split()[-1]) / 1024 for f in glob.glob(run + "/rss.*")]
 summaries = [json.load(open(f)) for f in sorted(glob.glob(run + "/out/*/summary.json"))]
 total = lambda key: sum(s["timing"].get(key, 0) for s in summaries)
+factors = summaries[0].get("factorization", {})  # MUMPS's INFOG(16), INFOG(17): full factorisations only
 print(f"{processes},{threads},{summaries[0]['ndof']},{sum(s['wall_s_total'] for s in summaries):.3f},"
-      f"{total('factorize_s'):.3f},{total('solve_s'):.3f},{total('assembly_residual_s'):.3f},{max(rss):.0f},{sum(rss):.0f}")
+      f"{total('factorize_s'):.3f},{total('solve_s'):.3f},{total('assembly_residual_s'):.3f},{max(rss):.0f},{sum(rss):.0f},"
+      f"{factors.get('memory_mb_largest_process', 0):.0f},{factors.get('memory_mb_all_processes', 0):.0f}")
 PY
 done
 python3 - "$csv" <<'PY'

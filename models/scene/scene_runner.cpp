@@ -245,6 +245,17 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   for (const RunPhase& phase : run_phases(r)) timing.set(phase.name + "_s", Json(phase.seconds));
   timing.set("factorizations", Json(double(r.factorizations)));
   s.set("timing", std::move(timing));
+  s.set("processes", Json(double(processes::count())));
+  // What the solver of the full factorisations predicted of them (MUMPS's INFOG), when they were made.
+  if (r.full_factors.entries > 0) {
+    Json f = Json::object();
+    f.set("symmetric", Json(r.full_factors.symmetric));
+    f.set("factor_entries", Json(r.full_factors.entries));
+    f.set("gflop", Json(r.full_factors.flops / 1e9));
+    f.set("memory_mb_all_processes", Json(r.full_factors.memory_bytes / 1e6));
+    f.set("memory_mb_largest_process", Json(r.full_factors.largest_process_memory_bytes / 1e6));
+    s.set("factorization", std::move(f));
+  }
   for (const auto& [name, value] : result_numbers(r)) s.set(name, finite_or_null(value));
   s.set("n_contact_nodes", Json(double(r.n_contact_nodes)));
   s.set("n_slip_nodes", Json(double(r.n_slip_nodes)));
@@ -573,6 +584,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   result.ux_corner = probe(m, locator, "u", 0, scene.output.corner);
   result.uy_corner = probe(m, locator, "u", 1, scene.output.corner);
   if (dim == 3) result.uz_corner = probe(m, locator, "u", 2, scene.output.corner);
+  result.full_factors = newton.full_factor_estimate();
   const auto diagnostics = m.diagnostics();
   if (diagnostics.count("contact_nodes_in_slip")) {
     result.n_slip_nodes = int(diagnostics.at("contact_nodes_in_slip"));

@@ -15,6 +15,7 @@
 #include <functional>
 #include <string>
 
+#include "assembly/linear_solver.hpp"
 #include "models/scene/output_directory_lock.hpp"
 #include "models/scene/scene.hpp"
 
@@ -62,6 +63,7 @@ struct FoundationRunResult {
          condensation_seconds = 0;
   int factorizations = 0;
   std::string linear_strategy;  // solver.condensation = "auto": what the cost model chose and why
+  FactorEstimate full_factors;   // the full factorisations' solver's prediction (summary.json: factorization)
   // Writing the results: history rows (probes included), the VTU series, checkpoints and the final tables
   // (summary.json, written after the wall time is taken, is not in it).
   double output_seconds = 0;

@@ -120,6 +120,9 @@ class NewtonSolver {
   int analyses() const { return analyses_; }
   // What "auto" chose and why (the cost model's line), once it has chosen; empty otherwise.
   const std::string& strategy_explanation() const { return explanation_; }
+  // What the solver of full factorisations predicted at its last analysis (zeros before one, and while the
+  // condensed or Krylov paths solve without it).
+  FactorEstimate full_factor_estimate() const { return linear_->factor_estimate(); }
   // Called after every iteration with the report so far (its history's last entry is the iteration):
   // progress for a long solve.
   void set_iteration_callback(std::function<void(const NewtonReport&)> on_iteration) {

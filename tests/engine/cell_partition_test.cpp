@@ -14,8 +14,7 @@
 
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
-#include "assembly/pointwise_term.hpp"
-#include "assembly/term_assembly.hpp"
+#include "support/nonlinear_terms.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {
@@ -93,34 +92,12 @@ TEST(CellPartition, OnePartNeedsNoMetisAndImpossiblePartitionsAreRefused) {
   EXPECT_EQ(owned, (std::vector<char>{0, 1, 1, 0}));
 }
 
-// Nonlinear in u, so that every entry is a sum of element contributions that depend on the values.
-struct NonlinearDiffusion {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
-    S size = S(1);
-    for (int c = 0; c < in.dim; ++c) size += in.value[0][c] * in.value[0][c];
-    for (int c = 0; c < in.dim; ++c) {
-      for (int d = 0; d < in.dim; ++d) out.f1[0][c][d] = size * in.grad[0][c][d];
-      out.f0[0][c] = in.value[0][0] * in.value[0][0] * in.value[0][0];
-    }
-  }
-};
-
-// Residual and tangent (as a dense matrix) of the term over the region's elements of the owned cells.
-template <class Kernel>
+// Residual and tangent (as a dense matrix) of the nonlinear term over the region's elements of the owned
+// cells (all: empty).
 std::pair<Eigen::VectorXd, Eigen::MatrixXd> assembled(const FESpace& space, Integration integration,
                                                       const std::string& region, std::span<const char> owned) {
-  auto term = std::make_shared<PointwiseTerm<Kernel>>("t", integration,
-                                                      std::vector<FieldUse>{{"u", integration == Integration::Cells}},
-                                                      std::vector<int>{0}, std::vector<Coupling>{{0, 0}}, Kernel{});
-  auto geometry = std::make_shared<const RegionGeometry>(space.mesh(), region, 4, owned);
-  TermAssembly assembly(term, geometry, {&space});
-  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(space.num_dofs(), -0.7, 1.3);
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(space.num_dofs());
-  const Eigen::VectorXd* values[] = {&u};
-  Eigen::VectorXd* residuals[] = {&r};
-  assembly.assemble(values, 0.0, residuals, true);
-  return {r, Eigen::MatrixXd(assembly.block(0))};
+  const auto [r, k] = testing::assembled_term<testing::NonlinearDiffusion>(space, integration, region, owned);
+  return {r, Eigen::MatrixXd(k)};
 }
 
 TEST(CellPartition, AssemblyOverThePartsSumsToAssemblyOverTheMesh) {
@@ -138,7 +115,7 @@ TEST(CellPartition, AssemblyOverThePartsSumsToAssemblyOverTheMesh) {
     const FESpace space(c.mesh, c.order, c.mesh->dim());
     for (Integration integration : {Integration::Cells, Integration::Faces}) {
       const std::string region = integration == Integration::Cells ? "all" : "boundary";
-      const auto whole = assembled<NonlinearDiffusion>(space, integration, region, {});
+      const auto whole = assembled(space, integration, region, {});
       ASSERT_GT(whole.second.cwiseAbs().maxCoeff(), 0);
       const std::vector<int> owner = partition_cells(*c.mesh, 3);
       Eigen::VectorXd r = Eigen::VectorXd::Zero(whole.first.size());
@@ -146,7 +123,7 @@ TEST(CellPartition, AssemblyOverThePartsSumsToAssemblyOverTheMesh) {
       int elements = 0;
       for (int part = 0; part < 3; ++part) {
         const std::vector<char> owned = cells_of_part(owner, part);
-        const auto share = assembled<NonlinearDiffusion>(space, integration, region, owned);
+        const auto share = assembled(space, integration, region, owned);
         r += share.first;
         k += share.second;
         elements += RegionGeometry(*c.mesh, region, 4, owned).num_elements();

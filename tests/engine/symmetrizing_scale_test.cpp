@@ -33,11 +33,10 @@ TEST(SymmetrizingRowScale, FindsTheInverseOfTheWeightsOfWeightedSymmetricRows) {
   }
 }
 
-TEST(SymmetrizingRowScale, UndoesTheTimeSchemeFactorOfThePiezoelectricGaussLaw) {
-  // [K C; c C^T -G] with K, G SPD Laplacians and a coupling C, c = 1e-3 (a step): s = 1 on the first
-  // block, 1/c on the second.
-  const int m = 5, n = m * m;
-  const double c = 1e-3;
+// [K C; c C^T -G] with K, G SPD Laplacians on an m x m grid (n = m^2 rows each) and a coupling C of row i
+// to row n + i + 1, c the time scheme's factor.
+CsrMatrix piezoelectric_form(int m, double c) {
+  const int n = m * m;
   Triplets t;
   for (const auto& e : stencil_2d(m, 0.0)) {
     t.emplace_back(e.row(), e.col(), 1e9 * e.value());
@@ -47,7 +46,14 @@ TEST(SymmetrizingRowScale, UndoesTheTimeSchemeFactorOfThePiezoelectricGaussLaw) 
     t.emplace_back(i, n + i + 1, 17.0);
     t.emplace_back(n + i + 1, i, c * 17.0);
   }
-  const CsrMatrix a = from_triplets(2 * n, 2 * n, t);
+  return from_triplets(2 * n, 2 * n, t);
+}
+
+TEST(SymmetrizingRowScale, UndoesTheTimeSchemeFactorOfThePiezoelectricGaussLaw) {
+  // c = 1e-3 (a step): s = 1 on the first block, 1/c on the second.
+  const int m = 5, n = m * m;
+  const double c = 1e-3;
+  const CsrMatrix a = piezoelectric_form(m, c);
   const std::optional<Eigen::VectorXd> s = symmetrizing_row_scale(a);
   ASSERT_TRUE(s.has_value());
   for (int i = 0; i < n; ++i) EXPECT_NEAR((*s)[i], 1.0, 1e-14);
@@ -61,25 +67,17 @@ TEST(SymmetrizingRowScale, UndoesTheTimeSchemeFactorOfThePiezoelectricGaussLaw) 
 TEST(SymmetrizingRowScale, TheScaleOfSharesIsNormalisedByItsLargestRow) {
   const int m = 5, n = m * m;
   const double c = 1e-3;
-  Triplets t;
-  for (const auto& e : stencil_2d(m, 0.0)) {
-    t.emplace_back(e.row(), e.col(), 1e9 * e.value());
-    t.emplace_back(n + e.row(), n + e.col(), -1e-8 * e.value());
-  }
-  for (int i = 0; i < n; ++i) {
-    t.emplace_back(i, n + i, 17.0);
-    t.emplace_back(n + i, i, c * 17.0);
-  }
-  const CsrMatrix a = from_triplets(2 * n, 2 * n, t);
+  const CsrMatrix a = piezoelectric_form(m, c);
   const RowSymmetrizer symmetrizer(a);
   const std::optional<Eigen::VectorXd> s = symmetrizer.scale_of_shares(a);
   ASSERT_TRUE(s.has_value());
+  // Row n, coupled to nothing by a strong entry, keeps 1; the others are c and 1.
   for (int i = 0; i < n; ++i) EXPECT_NEAR((*s)[i], c, 1e-17) << i;
   for (int i = n; i < 2 * n; ++i) EXPECT_NEAR((*s)[i], 1.0, 1e-12) << i;
   EXPECT_LT(asymmetry(a, *s), 1e-15);
   // Values that lose the symmetry: no scale, as scale() says.
   CsrMatrix b = a;
-  b.coeffRef(0, n) *= 1.5;
+  b.coeffRef(0, n + 1) *= 1.5;
   EXPECT_FALSE(RowSymmetrizer(b).scale_of_shares(b).has_value());
 }
 

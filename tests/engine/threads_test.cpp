@@ -14,52 +14,27 @@
 #include "assembly/mesh_generators.hpp"
 #include "assembly/pointwise_term.hpp"
 #include "assembly/term_assembly.hpp"
+#include "support/nonlinear_terms.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {
 namespace {
 
 using testing::error_of;
-
-// A nonlinear diffusion-reaction on a vector field: f1 = (1 + |u|^2) grad u, f0 = u_0^3 (a tangent that
-// depends on u everywhere, so that every entry is a sum of element contributions).
-struct NonlinearDiffusion {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
-    S size = S(1);
-    for (int c = 0; c < in.dim; ++c) size += in.value[0][c] * in.value[0][c];
-    for (int c = 0; c < in.dim; ++c) {
-      for (int d = 0; d < in.dim; ++d) out.f1[0][c][d] = size * in.grad[0][c][d];
-      out.f0[0][c] = in.value[0][0] * in.value[0][0] * in.value[0][0];
-    }
-  }
-};
-struct FaceReaction {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
-    for (int c = 0; c < in.dim; ++c) out.f0[0][c] = in.value[0][c] * in.value[0][c] * in.normal[c];
-  }
-};
+using testing::FaceReaction;
+using testing::NonlinearDiffusion;
 
 // Restores the default thread count when a test ends.
 struct ThreadsGuard {
   ~ThreadsGuard() { set_assembly_threads(0); }
 };
 
+// The term's residual and tangent values, assembled on `threads` threads.
 template <class Kernel>
 std::pair<Eigen::VectorXd, Eigen::VectorXd> assembled(const FESpace& space, Integration integration,
                                                       const std::string& region, int threads) {
   set_assembly_threads(threads);
-  auto term = std::make_shared<PointwiseTerm<Kernel>>("t", integration,
-                                                      std::vector<FieldUse>{{"u", integration == Integration::Cells}},
-                                                      std::vector<int>{0}, std::vector<Coupling>{{0, 0}}, Kernel{});
-  TermAssembly assembly(term, region, {&space});
-  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(space.num_dofs(), -0.7, 1.3);
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(space.num_dofs());
-  const Eigen::VectorXd* values[] = {&u};
-  Eigen::VectorXd* residuals[] = {&r};
-  assembly.assemble(values, 0.0, residuals, true);
-  const CsrMatrix& k = assembly.block(0);
+  const auto [r, k] = testing::assembled_term<Kernel>(space, integration, region);
   return {r, Eigen::Map<const Eigen::VectorXd>(k.valuePtr(), k.nonZeros())};
 }
 
