@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <set>
 
 #include "assembly/cell_partition.hpp"
@@ -580,6 +581,34 @@ void Model::assemble(bool tangent) {
     r.setZero();
   };
 
+  // Distributed, an element loop that throws on one process must not leave the others waiting in the
+  // sums that follow it: each loop's failure is kept, the processes agree on it before the brick's sums,
+  // and all of them throw (the failing one its own error, the others its message).
+  std::exception_ptr failure;
+  auto element_loop = [&](auto&& run) {
+    if (!processes::distributed()) return run();
+    if (failure) return;
+    try {
+      run();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  };
+  auto agree_on_failure = [&](const Brick& brick) {
+    if (!processes::distributed()) return;
+    const int failed = int(processes::max(failure ? double(processes::rank()) : -1.0));
+    if (failed < 0) return;
+    std::string text;
+    if (processes::rank() == failed) try {
+        std::rethrow_exception(failure);
+      } catch (const std::exception& e) {
+        text = e.what();
+      }
+    processes::broadcast(text, failed);
+    if (processes::rank() == failed) std::rethrow_exception(failure);
+    fail("brick '", brick.name(), "' failed on process ", failed, " of the run: ", text);
+  };
+
   for (int b = 0; b < int(bricks_.size()); ++b) {
     refresh_brick(b);
     BrickState& state = *brick_states_[b];
@@ -594,16 +623,17 @@ void Model::assemble(bool tangent) {
           outputs.push_back(&brick_residual.at(u));
           touched.insert(u);
         }
-        bt.assembly->assemble(values, time_, outputs, tangent);
+        element_loop([&] { bt.assembly->assemble(values, time_, outputs, tangent); });
         continue;
       }
       outputs.assign(bt.test_unknowns.size(), nullptr);
       if (!state.tangent_valid) {
         const auto start = std::chrono::steady_clock::now();
-        bt.assembly->assemble(values, time_, outputs, true);
+        element_loop([&] { bt.assembly->assemble(values, time_, outputs, true); });
         jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       }
     }
+    agree_on_failure(brick);
     if (!brick.linear()) {
       for (const std::string& u : touched) {
         Eigen::VectorXd& share = brick_residual.at(u);  // distributed: of this process's elements
@@ -640,9 +670,10 @@ void Model::assemble(bool tangent) {
           auto [it, inserted] = state.r0.try_emplace(u, Eigen::VectorXd::Zero(space(u).num_dofs()));
           outputs.push_back(&it->second);
         }
-        bt.assembly->assemble(values, time_, outputs, false);
+        element_loop([&] { bt.assembly->assemble(values, time_, outputs, false); });
         for (const std::string& name : bt.uncoupled_data) state.r0_data_versions[name] = field(name).version;
       }
+      agree_on_failure(brick);
       for (auto& [u, r0] : state.r0) processes::sum({r0.data(), size_t(r0.size())});
       state.r0_valid = true;
       state.r0_time = time_;
