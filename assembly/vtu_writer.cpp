@@ -89,6 +89,42 @@ Grid quadratic_grid(const FESpace& space) {
   return grid;
 }
 
+// The part of a grid on the flagged cells: their points (kept[i]: the grid's index of the piece's point
+// i, increasing) and their cells (`cells_kept`).
+Grid piece_of(const Grid& whole, std::span<const char> cells, std::vector<int>& kept, std::vector<int>& cells_kept) {
+  std::vector<int> new_index(size_t(whole.num_points), -1);
+  for (size_t c = 0; c < cells.size(); ++c)
+    if (cells[c])
+      for (std::int64_t k = c == 0 ? 0 : whole.offsets[c - 1]; k < whole.offsets[c]; ++k) new_index[size_t(whole.connectivity[size_t(k)])] = 0;
+  kept.clear();
+  for (int p = 0; p < whole.num_points; ++p)
+    if (new_index[size_t(p)] == 0) {
+      new_index[size_t(p)] = int(kept.size());
+      kept.push_back(p);
+    }
+  Grid piece;
+  piece.num_points = int(kept.size());
+  for (int p : kept) piece.points.insert(piece.points.end(), whole.points.begin() + 3 * p, whole.points.begin() + 3 * p + 3);
+  cells_kept.clear();
+  for (size_t c = 0; c < cells.size(); ++c) {
+    if (!cells[c]) continue;
+    cells_kept.push_back(int(c));
+    for (std::int64_t k = c == 0 ? 0 : whole.offsets[c - 1]; k < whole.offsets[c]; ++k)
+      piece.connectivity.push_back(new_index[size_t(whole.connectivity[size_t(k)])]);
+    piece.offsets.push_back(std::int64_t(piece.connectivity.size()));
+    piece.types.push_back(whole.types[c]);
+  }
+  return piece;
+}
+
+// The values of the kept entries (points or cells) of an array of `components` values per entry.
+std::vector<double> kept_values(const std::vector<double>& values, int components, const std::vector<int>& kept) {
+  std::vector<double> out;
+  out.reserve(kept.size() * size_t(components));
+  for (int i : kept) out.insert(out.end(), values.begin() + i * components, values.begin() + (i + 1) * components);
+  return out;
+}
+
 void require_unique_name(const std::string& kind, const std::string& name, auto const& arrays) {
   require(!name.empty(), "VtuWriter: a ", kind, " field needs a name");
   for (const auto& a : arrays) require(a.name != name, "VtuWriter: ", kind, " field '", name, "' added twice");
@@ -202,29 +238,36 @@ std::string VtuWriter::non_finite_array() const {
   return "";
 }
 
-void VtuWriter::write(const std::string& path, VtuFormat format) const {
-  const Grid grid = quadratic_points_ ? quadratic_grid(*quadratic_points_) : linear_grid(mesh_);
+void VtuWriter::write(const std::string& path, VtuFormat format, std::span<const char> cells) const {
+  require(cells.empty() || int(cells.size()) == mesh_.num_cells(), "VtuWriter: ", cells.size(),
+          " cell flags for a mesh of ", mesh_.num_cells(), " cells (", path, ")");
+  const Grid whole = quadratic_points_ ? quadratic_grid(*quadratic_points_) : linear_grid(mesh_);
+  std::vector<int> points_kept, cells_kept;
+  const Grid piece = cells.empty() ? Grid{} : piece_of(whole, cells, points_kept, cells_kept);
+  const Grid& grid = cells.empty() ? whole : piece;
+  const int num_cells = cells.empty() ? mesh_.num_cells() : int(cells_kept.size());
   write_atomically(path, "VtuWriter", [&](std::ostream& out) {
     VtuDataArrays arrays(format);
     out << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"UnstructuredGrid\" " << arrays.file_attributes() << ">\n"
         << "  <UnstructuredGrid>\n"
-        << "    <Piece NumberOfPoints=\"" << grid.num_points << "\" NumberOfCells=\"" << mesh_.num_cells()
-        << "\">\n";
+        << "    <Piece NumberOfPoints=\"" << grid.num_points << "\" NumberOfCells=\"" << num_cells << "\">\n";
     out << "      <PointData>\n";
-    // Interpolated values live until the appended data is written.
-    std::vector<std::vector<double>> interpolated;
-    interpolated.reserve(point_data_.size());
+    // Interpolated values and a piece's values live until the appended data is written.
+    std::vector<std::vector<double>> computed;
+    computed.reserve(point_data_.size() + cell_data_.size());
     for (const PointArray& a : point_data_) {
-      if (quadratic_points_ && a.at_mesh_nodes) {
-        interpolated.push_back(at_quadratic_points(a));
-        arrays.add(out, a.name, a.components, std::span<const double>(interpolated.back()));
-      } else {
-        arrays.add(out, a.name, a.components, std::span<const double>(a.values));
-      }
+      const std::vector<double>* values = &a.values;
+      if (quadratic_points_ && a.at_mesh_nodes) values = &computed.emplace_back(at_quadratic_points(a));
+      if (!cells.empty()) values = &computed.emplace_back(kept_values(*values, a.components, points_kept));
+      arrays.add(out, a.name, a.components, std::span<const double>(*values));
     }
     out << "      </PointData>\n      <CellData>\n";
-    for (const Array& a : cell_data_) arrays.add(out, a.name, a.components, std::span<const double>(a.values));
+    for (const Array& a : cell_data_) {
+      const std::vector<double>* values = &a.values;
+      if (!cells.empty()) values = &computed.emplace_back(kept_values(a.values, a.components, cells_kept));
+      arrays.add(out, a.name, a.components, std::span<const double>(*values));
+    }
     out << "      </CellData>\n      <Points>\n";
     arrays.add(out, "Points", 3, std::span<const double>(grid.points));
     out << "      </Points>\n      <Cells>\n";
@@ -234,6 +277,25 @@ void VtuWriter::write(const std::string& path, VtuFormat format) const {
     out << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
     arrays.write_appended(out);
     out << "</VTKFile>\n";
+  });
+}
+
+void VtuWriter::write_pvtu(const std::string& path, const std::vector<std::string>& pieces) const {
+  write_atomically(path, "VtuWriter", [&](std::ostream& out) {
+    auto declare = [&](const Array& a) {
+      out << "      <PDataArray type=\"Float64\" Name=\"" << xml_escape(a.name) << "\" NumberOfComponents=\""
+          << a.components << "\"/>\n";
+    };
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+        << "  <PUnstructuredGrid GhostLevel=\"0\">\n    <PPointData>\n";
+    for (const PointArray& a : point_data_) declare(a);
+    out << "    </PPointData>\n    <PCellData>\n";
+    for (const Array& a : cell_data_) declare(a);
+    out << "    </PCellData>\n    <PPoints>\n      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+        << "    </PPoints>\n";
+    for (const std::string& piece : pieces) out << "    <Piece Source=\"" << xml_escape(piece) << "\"/>\n";
+    out << "  </PUnstructuredGrid>\n</VTKFile>\n";
   });
 }
 

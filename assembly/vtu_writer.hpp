@@ -6,6 +6,7 @@
 // one or more values per cell. The arrays are written in a VtuFormat (assembly/vtu_format.hpp): text,
 // inline base64, or raw or zlib-compressed appended data.
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,8 +35,13 @@ class VtuWriter {
   // finite: a caller that must never write a non-finite result checks this before write().
   std::string non_finite_array() const;
 
-  // Writes the file (the directory must exist); throws naming the path if it cannot.
-  void write(const std::string& path, VtuFormat format = kDefaultVtuFormat) const;
+  // Writes the file (the directory must exist); throws naming the path if it cannot. With `cells` (one
+  // flag per mesh cell) the file is the piece of the flagged cells: the points they use, in increasing
+  // order, with their point data, and those cells with their cell data.
+  void write(const std::string& path, VtuFormat format = kDefaultVtuFormat, std::span<const char> cells = {}) const;
+  // The parallel file (.pvtu) of pieces written by write(..., cells): this writer's arrays, and the
+  // pieces' file names (relative to the .pvtu), which ParaView reads as one data set.
+  void write_pvtu(const std::string& path, const std::vector<std::string>& pieces) const;
 
  private:
   struct Array {

@@ -404,8 +404,11 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       std::filesystem::create_directories(dir, error);
       require(!error && std::filesystem::is_directory(dir), "cannot create the output directory '", dir, "' (--out): ",
               error ? error.message() : "a file of that name is in the way");
-      series = std::make_unique<ResultSeries>(dir, scene.name, scene.output.vtu_format);
     }
+    processes::any(false);  // the folder exists before the other processes write their pieces into it
+    // Distributed, every process writes the piece of its cells of each VTU step, the writer the .pvtu.
+    series = std::make_unique<ResultSeries>(dir, scene.name, scene.output.vtu_format);
+    series->write_pieces(m.owned_cells());
     // Every process resumes from the writer's checkpoint (the folder is shared), or none does.
     if (processes::broadcast(run_options.resume && std::filesystem::exists(checkpoint_path))) {
       const Checkpoint checkpoint = read_checkpoint(checkpoint_path);
@@ -414,18 +417,20 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       restore_model_state(m, *built.scheme, checkpoint);
       options.resume = restore_stepper_state(checkpoint);
       restore_totals(checkpoint, result, earlier_wall_seconds);
-      if (writer) {
+      if (writer)
         history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_header, options.resume->steps));
-        series->continue_from(restore_series(checkpoint));
-      }
+      series->continue_from(restore_series(checkpoint));
       if (progress)
         std::printf("  [%s] resumed at step %d, t = %.6g s, from %s\n", foundation.name.c_str(), options.resume->steps,
                     options.resume->time, checkpoint_path.c_str());
-    } else if (writer) {
-      history = std::make_unique<CsvLog>(dir + "/history.csv", history_header);
+    } else {
       series->continue_from({});  // a series of an earlier run in this folder is not mixed in
-      std::filesystem::remove(checkpoint_path, error);
+      if (writer) {
+        history = std::make_unique<CsvLog>(dir + "/history.csv", history_header);
+        std::filesystem::remove(checkpoint_path, error);
+      }
     }
+    processes::any(false);  // the writer has cleared the folder's stale steps before any piece is written
   }
   // Writing results, timed as the run's output phase.
   auto timed_output = [&](auto&& write) {

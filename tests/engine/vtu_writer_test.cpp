@@ -420,6 +420,73 @@ TEST_F(VtuWriterTest, RewritingReplacesTheFile) {
   EXPECT_EQ(find_array(vtu, "PointData", "b").doubles(), std::vector<double>(mesh->num_nodes(), 2.0));
 }
 
+// Pieces of a distributed run: each process's file holds its cells, the points they use and their data,
+// and together the pieces are the whole file (linear and quadratic); the .pvtu lists the arrays and the
+// pieces.
+TEST_F(VtuWriterTest, PiecesOfThePartsMakeTheWholeFileAndThePvtuNamesThem) {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
+  for (int order : {1, 2}) {
+    SCOPED_TRACE(order);
+    FESpace space(mesh, order, 2);
+    std::vector<double> cell_ids(mesh->num_cells());
+    for (int c = 0; c < mesh->num_cells(); ++c) cell_ids[c] = c;
+    VtuWriter writer(*mesh);
+    writer.add_point_field("u", space, space.interpolate(linear_vector));
+    writer.add_cell_data("cell", 1, cell_ids);
+    const fs::path whole_path = directory_ / "whole.vtu";
+    writer.write(whole_path.string());
+    const std::string whole = read_text(whole_path);
+    // The whole file's value of u at each point, by its coordinates.
+    const auto points = find_array(whole, "Points", "Points").doubles();
+    const auto u = find_array(whole, "PointData", "u").doubles();
+    std::map<std::array<double, 3>, std::array<double, 3>> u_at;
+    for (size_t p = 0; p * 3 < points.size(); ++p)
+      u_at[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = {u[3 * p], u[3 * p + 1], u[3 * p + 2]};
+
+    std::vector<int> seen(mesh->num_cells(), 0);
+    std::vector<std::string> pieces;
+    for (int part = 0; part < 3; ++part) {
+      std::vector<char> cells(mesh->num_cells(), 0);
+      for (int c = 0; c < mesh->num_cells(); ++c) cells[c] = c % 3 == part;  // parts need not hang together
+      pieces.push_back("piece_" + std::to_string(part) + ".vtu");
+      writer.write((directory_ / pieces.back()).string(), kDefaultVtuFormat, cells);
+      const std::string piece = read_text(directory_ / pieces.back());
+      const auto ids = find_array(piece, "CellData", "cell").doubles();
+      for (double id : ids) {
+        EXPECT_EQ(int(id) % 3, part);
+        ++seen[int(id)];
+      }
+      const auto piece_points = find_array(piece, "Points", "Points").doubles();
+      const auto piece_u = find_array(piece, "PointData", "u").doubles();
+      ASSERT_EQ(piece_points.size(), piece_u.size());
+      EXPECT_LT(piece_points.size(), points.size()) << "a piece holds every point";
+      for (size_t p = 0; p * 3 < piece_points.size(); ++p) {
+        const auto found = u_at.find({piece_points[3 * p], piece_points[3 * p + 1], piece_points[3 * p + 2]});
+        ASSERT_NE(found, u_at.end()) << "a piece's point that the whole file does not have";
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(piece_u[3 * p + k], found->second[k]);
+      }
+      const auto offsets = find_array(piece, "Cells", "offsets").int64s();
+      ASSERT_EQ(offsets.size(), ids.size());
+      for (std::int64_t node : find_array(piece, "Cells", "connectivity").int64s()) {
+        EXPECT_GE(node, 0);
+        EXPECT_LT(node, std::int64_t(piece_points.size() / 3));
+      }
+    }
+    EXPECT_EQ(seen, std::vector<int>(mesh->num_cells(), 1)) << "each cell in one piece";
+
+    const fs::path pvtu = directory_ / "whole.pvtu";
+    writer.write_pvtu(pvtu.string(), pieces);
+    const std::string text = read_text(pvtu);
+    EXPECT_NE(text.find("<VTKFile type=\"PUnstructuredGrid\""), std::string::npos);
+    EXPECT_NE(text.find("<PDataArray type=\"Float64\" Name=\"u\" NumberOfComponents=\"3\"/>"), std::string::npos);
+    EXPECT_NE(text.find("<PDataArray type=\"Float64\" Name=\"cell\" NumberOfComponents=\"1\"/>"), std::string::npos);
+    for (const std::string& piece : pieces)
+      EXPECT_NE(text.find("<Piece Source=\"" + piece + "\"/>"), std::string::npos) << piece;
+  }
+  EXPECT_THROW(VtuWriter(*mesh).write((directory_ / "bad.vtu").string(), kDefaultVtuFormat, std::vector<char>(3, 1)),
+               Error);
+}
+
 // ---- formats ------------------------------------------------------------------------------------
 
 // Values that a careless text or binary encoding would change: signed zero, subnormals, the extremes,

@@ -199,6 +199,29 @@ TEST_F(OutputTest, AContinuedSeriesRemovesOnlyItsOwnStaleStepFiles) {
   expect_error_containing([&] { series.continue_from({{4, 0.5}}); }, {"the file of step 4", "is missing"});
 }
 
+// A distributed run's series: a step's .pvtu and its pieces are the series' files; continued (resumed,
+// perhaps on another number of processes), a kept step keeps the file it was written as and its pieces,
+// and the other steps' files of both kinds go.
+TEST_F(OutputTest, AContinuedSeriesKeepsItsStepsPiecesAndClearsTheOthers) {
+  for (const char* name : {"s_000000.pvtu", "s_000000_0.vtu", "s_000000_1.vtu", "s_000005.vtu", "s_000010.pvtu",
+                           "s_000010_0.vtu", "s_000010_1.vtu", "s_000010_.vtu", "s_000010_x.vtu"})
+    std::ofstream(directory_ / name) << "x";
+  for (const char* name : {"s_000000.pvtu", "s_000000_0.vtu", "s_000000_12.vtu", "s_000005.vtu"})
+    EXPECT_TRUE(ResultSeries::is_step_file("s", name)) << name;
+  for (const char* name : {"s_000010_.vtu", "s_000010_x.vtu", "s_.pvtu", "s_000010.pvtu.tmp"})
+    EXPECT_FALSE(ResultSeries::is_step_file("s", name)) << name;
+  ResultSeries series(directory_.string(), "s");
+  series.continue_from({{0, 0.0}, {5, 0.5}});
+  for (const char* kept : {"s_000000.pvtu", "s_000000_0.vtu", "s_000000_1.vtu", "s_000005.vtu", "s_000010_.vtu",
+                           "s_000010_x.vtu"})
+    EXPECT_TRUE(fs::exists(directory_ / kept)) << kept;
+  for (const char* gone : {"s_000010.pvtu", "s_000010_0.vtu", "s_000010_1.vtu"})
+    EXPECT_FALSE(fs::exists(directory_ / gone)) << gone;
+  const std::string pvd = read_text(directory_ / "s.pvd");
+  EXPECT_NE(pvd.find("file=\"s_000000.pvtu\""), std::string::npos) << pvd;
+  EXPECT_NE(pvd.find("file=\"s_000005.vtu\""), std::string::npos) << pvd;
+}
+
 TEST_F(OutputTest, CsvLogContinuesAfterTheRowsKept) {
   const std::string path = (directory_ / "log.csv").string();
   {

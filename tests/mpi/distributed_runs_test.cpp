@@ -13,7 +13,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -107,6 +109,79 @@ void compare_vtu(const fs::path& a, const fs::path& b, Spreads& spreads) {
   }
 }
 
+// The arrays of a step written in pieces (a .pvtu), ordered as the points and cells of the same step's
+// whole file `whole`: a piece's points are matched by their coordinates, its cells by their points.
+void compare_pieces(const std::string& whole, const fs::path& pvtu, Spreads& spreads) {
+  using Key = std::array<double, 3>;
+  const auto points = pc::testing::find_array(whole, "Points", "Points").doubles();
+  std::map<Key, int> point_of;
+  for (size_t p = 0; 3 * p < points.size(); ++p) point_of[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = int(p);
+  // A cell by its sorted points.
+  const auto cells_of = [](const std::vector<std::int64_t>& connectivity, const std::vector<std::int64_t>& ends,
+                           auto&& global) {
+    std::vector<std::vector<int>> cells;
+    std::int64_t begin = 0;
+    for (std::int64_t end : ends) {
+      std::vector<int> nodes;
+      for (std::int64_t k = begin; k < end; ++k) nodes.push_back(global(int(connectivity[size_t(k)])));
+      std::sort(nodes.begin(), nodes.end());
+      cells.push_back(nodes);
+      begin = end;
+    }
+    return cells;
+  };
+  std::map<std::vector<int>, int> cell_of;
+  {
+    const auto cells = cells_of(pc::testing::find_array(whole, "Cells", "connectivity").int64s(),
+                                pc::testing::find_array(whole, "Cells", "offsets").int64s(), [](int p) { return p; });
+    for (size_t c = 0; c < cells.size(); ++c) cell_of[cells[c]] = int(c);
+  }
+  const std::string parallel = read_text(pvtu);
+  std::map<std::string, std::vector<double>> gathered;  // "PointData/u" -> values in whole's order
+  std::vector<char> point_seen(points.size() / 3, 0), cell_seen(cell_of.size(), 0);
+  for (size_t at = parallel.find("<Piece Source=\""); at != std::string::npos; at = parallel.find("<Piece Source=\"", at + 1)) {
+    const size_t begin = at + 15, end = parallel.find('"', begin);
+    const std::string piece = read_text(pvtu.parent_path() / parallel.substr(begin, end - begin));
+    const auto piece_points = pc::testing::find_array(piece, "Points", "Points").doubles();
+    std::vector<int> global(piece_points.size() / 3);
+    for (size_t p = 0; p < global.size(); ++p) {
+      const auto found = point_of.find({piece_points[3 * p], piece_points[3 * p + 1], piece_points[3 * p + 2]});
+      ASSERT_NE(found, point_of.end()) << pvtu << ": a piece's point is not in the whole file";
+      global[p] = found->second;
+      point_seen[size_t(found->second)] = 1;
+    }
+    const auto cells = cells_of(pc::testing::find_array(piece, "Cells", "connectivity").int64s(),
+                                pc::testing::find_array(piece, "Cells", "offsets").int64s(),
+                                [&](int p) { return global[size_t(p)]; });
+    std::vector<int> cell_index;
+    for (const auto& nodes : cells) {
+      const auto found = cell_of.find(nodes);
+      ASSERT_NE(found, cell_of.end()) << pvtu << ": a piece's cell is not in the whole file";
+      cell_index.push_back(found->second);
+      cell_seen[size_t(found->second)] = 1;
+    }
+    for (const char* section : {"PointData", "CellData"})
+      for (const std::string& name : pc::testing::array_names(piece, section)) {
+        const pc::testing::DataArray array = pc::testing::find_array(piece, section, name);
+        const auto values = array.doubles();
+        const bool on_points = std::string(section) == "PointData";
+        const size_t entries = on_points ? point_seen.size() : cell_seen.size();
+        auto& out = gathered[std::string(section) + "/" + name];
+        out.resize(entries * size_t(array.components));
+        const std::vector<int>& to = on_points ? global : cell_index;
+        for (size_t i = 0; i < to.size(); ++i)
+          for (int k = 0; k < array.components; ++k)
+            out[size_t(to[i]) * size_t(array.components) + size_t(k)] = values[i * size_t(array.components) + size_t(k)];
+      }
+  }
+  EXPECT_EQ(std::count(point_seen.begin(), point_seen.end(), 0), 0) << pvtu << ": points no piece holds";
+  EXPECT_EQ(std::count(cell_seen.begin(), cell_seen.end(), 0), 0) << pvtu << ": cells no piece holds";
+  for (const char* section : {"PointData", "CellData"})
+    for (const std::string& name : pc::testing::array_names(whole, section))
+      add(spreads, name, pc::testing::find_array(whole, section, name).doubles(),
+          gathered[std::string(section) + "/" + name]);
+}
+
 // Every field of runs a and b over the run: their largest difference and a's size.
 Spreads compare_runs(const fs::path& a, const fs::path& b) {
   Spreads spreads;
@@ -115,6 +190,14 @@ Spreads compare_runs(const fs::path& a, const fs::path& b) {
     const fs::path relative = fs::relative(entry.path(), a);
     const std::string ext = entry.path().extension().string();
     if (ext != ".csv" && ext != ".vtu") continue;
+    // A distributed run writes a step as a .pvtu of pieces where a serial one writes a .vtu.
+    fs::path parallel = b / relative;
+    parallel.replace_extension(".pvtu");
+    if (ext == ".vtu" && !fs::exists(b / relative) && fs::exists(parallel)) {
+      compare_pieces(read_text(entry.path()), parallel, spreads);
+      ++files;
+      continue;
+    }
     EXPECT_TRUE(fs::exists(b / relative)) << relative << " is missing from " << b;
     if (!fs::exists(b / relative)) continue;
     if (ext == ".csv") compare_csv(entry.path(), b / relative, spreads);
@@ -184,6 +267,12 @@ TEST_F(DistributedRuns, PaperSceneOnTwoAndThreeProcessesEqualsOneProcess) {
   ASSERT_EQ(on_two.status, 0) << on_two.log;
   const Outcome on_three = run(3, scene + three.string());
   ASSERT_EQ(on_three.status, 0) << on_three.log;
+  // Each VTU step of a distributed run: a .pvtu and one piece per process.
+  for (const char* file : {"paper2d_000200.pvtu", "paper2d_000200_0.vtu", "paper2d_000200_1.vtu"})
+    EXPECT_TRUE(fs::exists(two / "conductive" / file)) << file;
+  EXPECT_TRUE(fs::exists(three / "conductive" / "paper2d_000200_2.vtu"));
+  EXPECT_FALSE(fs::exists(two / "conductive" / "paper2d_000200.vtu"));
+  EXPECT_NE(read_text(two / "conductive" / "paper2d.pvd").find("paper2d_000200.pvtu"), std::string::npos);
   const Spreads serial_spread = compare_runs(one, full);
   expect_same_results(one, two, serial_spread);
   expect_same_results(one, three, serial_spread);
