@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "assembly/error.hpp"
+
 #ifdef PIEZOCONTACT_WITH_MPI
 // MPI's C interface only (OpenMPI's header otherwise declares its deprecated C++ bindings).
 #define OMPI_SKIP_MPICXX 1
@@ -12,6 +14,26 @@
 #endif
 
 namespace pc::processes {
+
+void agree_on_failure(std::exception_ptr failure, const std::string& what) {
+  if (count() == 1) {
+    if (failure) std::rethrow_exception(failure);
+    return;
+  }
+  const int failed = int(max(failure ? double(rank()) : -1.0));
+  if (failed < 0) return;
+  std::string text;
+  if (rank() == failed) try {
+      std::rethrow_exception(failure);
+    } catch (const std::exception& e) {
+      text = e.what();
+    } catch (...) {
+      text = "an exception that is no std::exception";
+    }
+  broadcast(text, failed);
+  if (rank() == failed) std::rethrow_exception(failure);
+  fail(what, " failed on process ", failed, " of the run: ", text);
+}
 
 #ifdef PIEZOCONTACT_WITH_MPI
 namespace {

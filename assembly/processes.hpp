@@ -7,6 +7,7 @@
 //
 // MPI is started by the first call that needs it (and finished at exit), so a driver works under
 // `mpirun` as it is; a driver that starts MPI itself (MPI_Init) is used as it is too.
+#include <exception>
 #include <span>
 #include <string>
 
@@ -29,6 +30,23 @@ void broadcast(std::span<double> values, int root = 0);
 void broadcast(std::string& text, int root = 0);
 // Rank `root`'s decision, on every process.
 bool broadcast(bool value, int root = 0);
+
+// Collective: whether any process failed (`failure` is this process's, null if none). If one did, every
+// process throws: the first failing process its own exception, the others a pc::Error naming `what`,
+// that process and its message. On one process, rethrows `failure` if there is one. So that an error met
+// by one process (its elements, its files) never leaves the others waiting in the next collective call.
+void agree_on_failure(std::exception_ptr failure, const std::string& what);
+// Runs `action` and agrees on its failure.
+template <class Action>
+void run_agreed(const std::string& what, Action&& action) {
+  std::exception_ptr failure;
+  try {
+    action();
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  agree_on_failure(failure, what);
+}
 
 // The Fortran handles of the world's and of this process's communicator, as MUMPS takes them.
 int fortran_world();

@@ -595,18 +595,7 @@ void Model::assemble(bool tangent) {
     }
   };
   auto agree_on_failure = [&](const Brick& brick) {
-    if (!processes::distributed()) return;
-    const int failed = int(processes::max(failure ? double(processes::rank()) : -1.0));
-    if (failed < 0) return;
-    std::string text;
-    if (processes::rank() == failed) try {
-        std::rethrow_exception(failure);
-      } catch (const std::exception& e) {
-        text = e.what();
-      }
-    processes::broadcast(text, failed);
-    if (processes::rank() == failed) std::rethrow_exception(failure);
-    fail("brick '", brick.name(), "' failed on process ", failed, " of the run: ", text);
+    if (processes::distributed()) processes::agree_on_failure(failure, "brick '" + brick.name() + "'");
   };
 
   for (int b = 0; b < int(bricks_.size()); ++b) {

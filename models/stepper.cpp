@@ -65,7 +65,9 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
         return summary;
       }
     }
-    if (callbacks.on_output) callbacks.on_output(model, record);
+    processes::run_agreed("the initial output", [&] {
+      if (callbacks.on_output) callbacks.on_output(model, record);
+    });
   }
 
   const double tiny = 1e-12 * (o.end - o.start);
@@ -136,17 +138,29 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
     record.time = t;
     record.dt = attempt;
     record.newton = std::move(report);
-    if (callbacks.on_step) callbacks.on_step(model, record);
+    // The callbacks write results, on one process of a distributed run for most of them: a failure there
+    // (a full disk) is agreed, so that every process stops with it.
+    processes::run_agreed("the step's results", [&] {
+      if (callbacks.on_step) callbacks.on_step(model, record);
+    });
     const bool last = t >= o.end - tiny;
-    if (callbacks.on_output && (record.step % o.output_every == 0 || last)) callbacks.on_output(model, record);
-    if (callbacks.on_checkpoint && o.checkpoint_every > 0 && record.step % o.checkpoint_every == 0 && !last)
-      callbacks.on_checkpoint(model, state);
+    if (record.step % o.output_every == 0 || last)
+      processes::run_agreed("the step's output", [&] {
+        if (callbacks.on_output) callbacks.on_output(model, record);
+      });
+    if (o.checkpoint_every > 0 && record.step % o.checkpoint_every == 0 && !last)
+      processes::run_agreed("the checkpoint", [&] {
+        if (callbacks.on_checkpoint) callbacks.on_checkpoint(model, state);
+      });
     record.cutbacks = 0;
     record.cut_back_cost = {};
     record.cut_back_assembly_seconds = 0;
   }
   summary.completed = t >= o.end - tiny;
-  if (!summary.completed && callbacks.on_checkpoint) callbacks.on_checkpoint(model, state);
+  if (!summary.completed)
+    processes::run_agreed("the checkpoint", [&] {
+      if (callbacks.on_checkpoint) callbacks.on_checkpoint(model, state);
+    });
   summary.steps = state.steps;
   summary.newton_iterations_total = state.newton_iterations_total;
   summary.newton_iterations_max_per_step = state.newton_iterations_max_per_step;

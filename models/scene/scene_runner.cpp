@@ -388,7 +388,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   options.output_every = scene.output.vtu_every;
   options.max_attempts = scene.max_attempts;
   options.max_wall_seconds = scene.max_wall_seconds;
-  options.checkpoint_every = dir.empty() || !writer ? 0 : scene.output.checkpoint_every;
+  options.checkpoint_every = dir.empty() ? 0 : scene.output.checkpoint_every;  // the writer's callback writes
   options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");
