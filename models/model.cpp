@@ -547,6 +547,7 @@ void Model::assemble(bool tangent) {
     product_rows_.resize(rows);
     gross_rows_.resize(rows);
     const int threads = K.nonZeros() >= kMinProductEntriesForThreads ? assembly_threads() : 1;
+    const bool shares = processes::distributed();
 #ifdef _OPENMP
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
 #endif
@@ -557,14 +558,17 @@ void Model::assemble(bool tangent) {
         row += term;
         row_gross += std::abs(term);
       }
+      if (!shares) out[r] += row;
       product_rows_[r] = row;
       gross_rows_[r] = row_gross;
     }
     // Distributed, K is this process's share: the rows are summed over the processes (a row's gross size
-    // then sums each share's, an upper bound of the undivided |K| |x|).
-    processes::sum(product_rows_);
-    processes::sum(gross_rows_);
-    for (int r = 0; r < rows; ++r) out[r] += product_rows_[r];
+    // then sums each share's, an upper bound of the undivided |K| |x|), then added.
+    if (shares) {
+      processes::sum(product_rows_);
+      processes::sum(gross_rows_);
+      for (int r = 0; r < rows; ++r) out[r] += product_rows_[r];
+    }
     double net = 0, gross = 0;
     for (int r = 0; r < rows; ++r)
       if (global[r] >= 0) {
@@ -594,9 +598,7 @@ void Model::assemble(bool tangent) {
       failure = std::current_exception();
     }
   };
-  auto agree_on_failure = [&](const Brick& brick) {
-    if (processes::distributed()) processes::agree_on_failure(failure, "brick '" + brick.name() + "'");
-  };
+  auto agree_on_failure = [&](const Brick& brick) { processes::agree_on_failure(failure, "brick '" + brick.name() + "'"); };
 
   for (int b = 0; b < int(bricks_.size()); ++b) {
     refresh_brick(b);

@@ -425,23 +425,30 @@ TEST_F(VtuWriterTest, RewritingReplacesTheFile) {
 // pieces.
 TEST_F(VtuWriterTest, PiecesOfThePartsMakeTheWholeFileAndThePvtuNamesThem) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
+  // Every format (the appended ones read the values when the file ends), linear and quadratic files (whose
+  // data at the mesh nodes is interpolated, then cut to the piece).
+  for (const VtuFormat format : kFormats)
   for (int order : {1, 2}) {
-    SCOPED_TRACE(order);
+    SCOPED_TRACE(message(to_string(format), ", order ", order));
     FESpace space(mesh, order, 2);
     std::vector<double> cell_ids(mesh->num_cells());
     for (int c = 0; c < mesh->num_cells(); ++c) cell_ids[c] = c;
     VtuWriter writer(*mesh);
     writer.add_point_field("u", space, space.interpolate(linear_vector));
+    std::vector<double> x_at_nodes(mesh->num_nodes());
+    for (int n = 0; n < mesh->num_nodes(); ++n) x_at_nodes[n] = mesh->node(n)[0];
+    writer.add_point_data("x", 1, x_at_nodes);
     writer.add_cell_data("cell", 1, cell_ids);
     const fs::path whole_path = directory_ / "whole.vtu";
-    writer.write(whole_path.string());
+    writer.write(whole_path.string(), format);
     const std::string whole = read_text(whole_path);
     // The whole file's value of u at each point, by its coordinates.
     const auto points = find_array(whole, "Points", "Points").doubles();
     const auto u = find_array(whole, "PointData", "u").doubles();
-    std::map<std::array<double, 3>, std::array<double, 3>> u_at;
+    const auto x = find_array(whole, "PointData", "x").doubles();
+    std::map<std::array<double, 3>, std::array<double, 4>> u_at;  // u and x at each point
     for (size_t p = 0; p * 3 < points.size(); ++p)
-      u_at[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = {u[3 * p], u[3 * p + 1], u[3 * p + 2]};
+      u_at[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = {u[3 * p], u[3 * p + 1], u[3 * p + 2], x[p]};
 
     std::vector<int> seen(mesh->num_cells(), 0);
     std::vector<std::string> pieces;
@@ -449,7 +456,7 @@ TEST_F(VtuWriterTest, PiecesOfThePartsMakeTheWholeFileAndThePvtuNamesThem) {
       std::vector<char> cells(mesh->num_cells(), 0);
       for (int c = 0; c < mesh->num_cells(); ++c) cells[c] = c % 3 == part;  // parts need not hang together
       pieces.push_back("piece_" + std::to_string(part) + ".vtu");
-      writer.write((directory_ / pieces.back()).string(), kDefaultVtuFormat, cells);
+      writer.write((directory_ / pieces.back()).string(), format, cells);
       const std::string piece = read_text(directory_ / pieces.back());
       const auto ids = find_array(piece, "CellData", "cell").doubles();
       for (double id : ids) {
@@ -458,12 +465,16 @@ TEST_F(VtuWriterTest, PiecesOfThePartsMakeTheWholeFileAndThePvtuNamesThem) {
       }
       const auto piece_points = find_array(piece, "Points", "Points").doubles();
       const auto piece_u = find_array(piece, "PointData", "u").doubles();
+      const auto piece_x = find_array(piece, "PointData", "x").doubles();
       ASSERT_EQ(piece_points.size(), piece_u.size());
+      ASSERT_EQ(piece_points.size(), 3 * piece_x.size());
       EXPECT_LT(piece_points.size(), points.size()) << "a piece holds every point";
       for (size_t p = 0; p * 3 < piece_points.size(); ++p) {
         const auto found = u_at.find({piece_points[3 * p], piece_points[3 * p + 1], piece_points[3 * p + 2]});
         ASSERT_NE(found, u_at.end()) << "a piece's point that the whole file does not have";
         for (int k = 0; k < 3; ++k) EXPECT_EQ(piece_u[3 * p + k], found->second[k]);
+        EXPECT_EQ(piece_x[p], found->second[3]);
+        EXPECT_NEAR(piece_x[p], piece_points[3 * p], 1e-15) << "x interpolated at the point is its x";
       }
       const auto offsets = find_array(piece, "Cells", "offsets").int64s();
       ASSERT_EQ(offsets.size(), ids.size());
