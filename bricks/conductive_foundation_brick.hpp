@@ -24,7 +24,7 @@ struct ConductiveFoundationKernel {
   template <class S>
   void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     S p_nu(0.0);
-    if constexpr (law_uses_normal_pressure<Law>) p_nu = normal->at(in.value[1].data(), in.normal, in.dim);
+    if constexpr (law_uses_normal_pressure<Law>) p_nu = normal->at(in.value[1].data(), in.normal, in.dim, in.time);
     out.f0[0][0] = (*law)(in.value[0][0], p_nu);
   }
 };

@@ -1,15 +1,20 @@
 #pragma once
 // Kinematics on the contact surface, shared by the contact bricks: the split of a vector r against the
 // body's outward unit normal n into r_nu = r . n and r_tau = r - r_nu n.
+#include <memory>
 #include <string>
+
+#include "bricks/foundation_motion.hpp"
 
 namespace pc {
 
-// Model names of the fields the contact bricks read.
+// What the contact bricks read: the model names of the body's fields, and the foundation's motion.
 struct ContactFields {
   std::string velocity = "v";
   std::string displacement = "u";  // an affine field of the velocity (u = k v + u_prev)
   std::string potential = "phi";
+  // Null: the foundation is at rest. Otherwise the laws read v - V_f(t) and u - U_f(t) (foundation_motion.hpp).
+  std::shared_ptr<const FoundationMotion> motion = nullptr;
 };
 
 template <class S>

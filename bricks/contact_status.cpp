@@ -45,38 +45,51 @@ ContactNodes contact_nodes(const FESpace& space, const std::string& face_region)
 }
 
 std::vector<double> nodal_contact_pressure(const NormalPressure& normal, const FESpace& space,
-                                           const ContactNodes& nodes, const Eigen::VectorXd& argument) {
+                                           const ContactNodes& nodes, const Eigen::VectorXd& argument, double t) {
   std::vector<double> pressure;
   for (size_t i = 0; i < nodes.scalar_dofs.size(); ++i) {
     const auto r = node_vector(space, argument, nodes.scalar_dofs[i]);
-    pressure.push_back(normal.at(r.data(), nodes.normals[i].data(), space.num_components()));
+    pressure.push_back(normal.at(r.data(), nodes.normals[i].data(), space.num_components(), t));
   }
   return pressure;
 }
 
-std::vector<double> nodal_slip_speed(const FESpace& space, const ContactNodes& nodes, const Eigen::VectorXd& velocity) {
+std::vector<double> nodal_slip_speed(const FESpace& space, const ContactNodes& nodes, const Eigen::VectorXd& velocity,
+                                     const FoundationMotion* motion, double t) {
   const int dim = space.num_components();
   std::vector<double> speed;
   for (size_t i = 0; i < nodes.scalar_dofs.size(); ++i) {
     const auto v = node_vector(space, velocity, nodes.scalar_dofs[i]);
+    const auto slip = relative_to_foundation(v.data(), motion, false, t, dim);
     double v_tau[3] = {}, slip2 = 0;
-    tangential_part(v.data(), nodes.normals[i].data(), dim, v_tau);
+    tangential_part(slip.data(), nodes.normals[i].data(), dim, v_tau);
     for (int d = 0; d < dim; ++d) slip2 += v_tau[d] * v_tau[d];
     speed.push_back(std::sqrt(slip2));
   }
   return speed;
 }
 
+std::vector<ContactState> nodal_contact_state(const std::vector<double>& pressure, const std::vector<double>& slip,
+                                              double slip_threshold) {
+  require(pressure.size() == slip.size(), "nodal_contact_state: ", pressure.size(), " pressures but ", slip.size(),
+          " slip speeds");
+  std::vector<ContactState> state(pressure.size(), ContactState::Separated);
+  for (size_t i = 0; i < pressure.size(); ++i)
+    if (pressure[i] > 0) state[i] = slip[i] > slip_threshold ? ContactState::Slipping : ContactState::Sticking;
+  return state;
+}
+
 ContactStatus contact_status(const NormalPressure& normal, const FESpace& space, const ContactNodes& nodes,
-                             const Eigen::VectorXd& argument, const Eigen::VectorXd& velocity, double slip_threshold) {
-  const std::vector<double> pressure = nodal_contact_pressure(normal, space, nodes, argument);
-  const std::vector<double> slip = nodal_slip_speed(space, nodes, velocity);
+                             const Eigen::VectorXd& argument, const Eigen::VectorXd& velocity, double slip_threshold,
+                             double t) {
+  const std::vector<double> pressure = nodal_contact_pressure(normal, space, nodes, argument, t);
+  const std::vector<double> slip = nodal_slip_speed(space, nodes, velocity, normal.motion(), t);
   ContactStatus status;
   status.nodes = int(pressure.size());
-  for (size_t i = 0; i < pressure.size(); ++i) {
-    if (!(pressure[i] > 0)) continue;
+  for (ContactState s : nodal_contact_state(pressure, slip, slip_threshold)) {
+    if (s == ContactState::Separated) continue;
     ++status.in_contact;
-    if (slip[i] > slip_threshold) ++status.sliding;
+    if (s == ContactState::Slipping) ++status.sliding;
   }
   return status;
 }

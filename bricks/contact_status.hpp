@@ -30,14 +30,23 @@ struct ContactStatus {
   int sticking() const { return in_contact - sliding; }
 };
 
-// Contact pressure p_nu at each node, from the values of the field the normal law reads (velocity, or
-// displacement for a compliance law), in the nodes' space numbering.
+// Contact pressure p_nu at each node at time t, from the values of the field the normal law reads (velocity,
+// or displacement for a compliance law), in the nodes' space numbering, relative to the normal brick's
+// foundation motion.
 std::vector<double> nodal_contact_pressure(const NormalPressure& normal, const FESpace& space,
-                                           const ContactNodes& nodes, const Eigen::VectorXd& argument);
-// |v_tau| at each node.
-std::vector<double> nodal_slip_speed(const FESpace& space, const ContactNodes& nodes, const Eigen::VectorXd& velocity);
+                                           const ContactNodes& nodes, const Eigen::VectorXd& argument, double t);
+// |v_tau - V_f,tau(t)| at each node: the slip relative to the foundation (motion null: at rest).
+std::vector<double> nodal_slip_speed(const FESpace& space, const ContactNodes& nodes, const Eigen::VectorXd& velocity,
+                                     const FoundationMotion* motion, double t);
+
+// What each contact node does: separated (p_nu = 0), sticking (pressed, slip at most the threshold) or
+// slipping; the numbers are the VTU array contact_state's values.
+enum class ContactState { Separated = 0, Sticking = 1, Slipping = 2 };
+std::vector<ContactState> nodal_contact_state(const std::vector<double>& pressure, const std::vector<double>& slip,
+                                              double slip_threshold);
 
 ContactStatus contact_status(const NormalPressure& normal, const FESpace& space, const ContactNodes& nodes,
-                             const Eigen::VectorXd& argument, const Eigen::VectorXd& velocity, double slip_threshold);
+                             const Eigen::VectorXd& argument, const Eigen::VectorXd& velocity, double slip_threshold,
+                             double t);
 
 }  // namespace pc

@@ -23,14 +23,17 @@ struct FrictionKernel {
   std::shared_ptr<const Law> law;
   std::shared_ptr<const NormalPressure> normal;  // null for a law that reads no pressure
   int pressure_argument;
+  std::shared_ptr<const FoundationMotion> motion = nullptr;  // null: the foundation is at rest
 
   template <class S>
   void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     const int dim = in.dim;
     S v_tau[3]{}, p_tau[3]{};
-    tangential_part(in.value[0].data(), in.normal, dim, v_tau);
+    const auto slip = relative_to_foundation(in.value[0].data(), motion.get(), false, in.time, dim);
+    tangential_part(slip.data(), in.normal, dim, v_tau);
     S p_nu(0.0);
-    if constexpr (law_uses_normal_pressure<Law>) p_nu = normal->at(in.value[pressure_argument].data(), in.normal, dim);
+    if constexpr (law_uses_normal_pressure<Law>)
+      p_nu = normal->at(in.value[pressure_argument].data(), in.normal, dim, in.time);
     (*law)(v_tau, dim, p_nu, p_tau);
     tangential_part(p_tau, in.normal, dim, out.f0[0].data());
   }
@@ -56,12 +59,17 @@ class FrictionBrick : public PairedLawBrick<Law> {
   std::string name() const override { return "friction on " + this->region_; }
   // P J P with J = dp_tau/dv_tau is symmetric when J is; the pressure coupling p_tau' (dp_nu/dv) is not.
   bool symmetric() const override { return law_symmetric<Law> && !law_uses_normal_pressure<Law>; }
+  // The slip is relative to a moving foundation, and a pressure it reads may be too.
+  bool time_dependent() const override { return foundation_moves(motion_.get()) || Base::time_dependent(); }
 
  private:
   FrictionBrick(BoundLaw<Law> law, std::string region, std::shared_ptr<const NormalPressure> normal,
                 ContactFields fields)
-      : Base(std::move(law), std::move(region), std::move(normal)) {
+      : Base(std::move(law), std::move(region), std::move(normal)), motion_(fields.motion) {
     this->require_pairing_of(name());
+    require(!this->normal_ || this->normal_->motion() == motion_.get(), "brick '", name(),
+            "': its foundation motion is not the one of the normal brick it is paired with (give both bricks the same "
+            "ContactFields::motion)");
     std::vector<FieldUse> uses = {{fields.velocity}};
     std::vector<Coupling> couplings = {{0, 0}};
     int pressure_argument = 0;
@@ -72,8 +80,10 @@ class FrictionBrick : public PairedLawBrick<Law> {
     }
     this->term_ = std::make_shared<PointwiseTerm<FrictionKernel<Law>>>(
         name(), Integration::Faces, std::move(uses), std::vector<int>{0}, std::move(couplings),
-        FrictionKernel<Law>{this->law_.shared(), this->normal_, pressure_argument});
+        FrictionKernel<Law>{this->law_.shared(), this->normal_, pressure_argument, motion_});
   }
+
+  std::shared_ptr<const FoundationMotion> motion_;
 };
 
 }  // namespace pc

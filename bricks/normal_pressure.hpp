@@ -28,15 +28,19 @@ class NormalPressure {
   virtual std::vector<std::string> law_data() const = 0;
   // The face region the pressure acts on; a brick paired with it must integrate over the same one.
   virtual const std::string& region() const = 0;
+  // The foundation's motion the law reads the body's relative to (null: at rest).
+  virtual const FoundationMotion* motion() const = 0;
   // The model field the law reads.
   const std::string& argument_field(const ContactFields& names) const {
     return reads_displacement() ? names.displacement : names.velocity;
   }
 
-  // p_nu at a point from the argument's value there and the outward unit normal.
+  // p_nu at a point and time t from the argument's value there and the outward unit normal, relative
+  // to the foundation's motion.
   template <class S>
-  S at(const S* argument, const double* normal, int dim) const {
-    const S r = normal_part(argument, normal, dim);
+  S at(const S* argument, const double* normal, int dim, double t) const {
+    const auto relative = relative_to_foundation(argument, motion(), reads_displacement(), t, dim);
+    const S r = normal_part(relative.data(), normal, dim);
     double slope = 0;
     const double p = pressure(value_of(r), &slope);
     return chain_rule(r, p, slope);

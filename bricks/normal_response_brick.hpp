@@ -27,10 +27,12 @@ template <class Law>
 struct NormalResponseKernel {
   std::shared_ptr<const Law> law;
   int argument;
+  std::shared_ptr<const FoundationMotion> motion = nullptr;  // null: the foundation is at rest
 
   template <class S>
   void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
-    const S p_nu = (*law)(normal_part(in.value[argument].data(), in.normal, in.dim));
+    const auto r = relative_to_foundation(in.value[argument].data(), motion.get(), argument == 1, in.time, in.dim);
+    const S p_nu = (*law)(normal_part(r.data(), in.normal, in.dim));
     for (int d = 0; d < in.dim; ++d) out.f0[0][d] = p_nu * in.normal[d];
   }
 };
@@ -52,6 +54,8 @@ class NormalResponseBrick : public NormalContactBrick {
   void update(const DataView& data) override { law_.update(data, name()); }
   std::vector<BrickTerm> terms() const override { return {{term_, region_}}; }
   bool linear() const override { return law_affine<Law>; }
+  // A moving foundation makes the residual depend on the time, not only on the unknowns.
+  bool time_dependent() const override { return foundation_moves(motion_.get()); }
   // The tangent p_nu' n n^T N_i N_j is symmetric; with the displacement it is a (v, u) block, which has no
   // (u, v) partner to be the transpose of.
   bool symmetric() const override { return !law_uses_displacement<Law>; }
@@ -66,22 +70,24 @@ class NormalResponseBrick : public NormalContactBrick {
     return p.v;
   }
   bool reads_displacement() const override { return law_uses_displacement<Law>; }
+  const FoundationMotion* motion() const override { return motion_.get(); }
   std::vector<std::string> law_data() const override { return law_.data(); }
 
  private:
   NormalResponseBrick(BoundLaw<Law> law, std::string region, ContactFields fields)
-      : region_(std::move(region)), law_(std::move(law)) {
+      : region_(std::move(region)), law_(std::move(law)), motion_(fields.motion) {
     const bool displacement = law_uses_displacement<Law>;
     std::vector<FieldUse> uses = {{fields.velocity}};
     if (displacement) uses.push_back({fields.displacement});
     const int argument = displacement ? 1 : 0;
     term_ = std::make_shared<PointwiseTerm<NormalResponseKernel<Law>>>(
         name(), Integration::Faces, std::move(uses), std::vector<int>{0}, std::vector<Coupling>{{0, argument}},
-        NormalResponseKernel<Law>{law_.shared(), argument});
+        NormalResponseKernel<Law>{law_.shared(), argument, motion_});
   }
 
   std::string region_;
   BoundLaw<Law> law_;
+  std::shared_ptr<const FoundationMotion> motion_;
   std::shared_ptr<const Term> term_;
 };
 

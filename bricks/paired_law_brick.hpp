@@ -22,6 +22,8 @@ class PairedLawBrick : public Brick {
   void update(const DataView& data) override { law_.update(data, name()); }
   std::vector<BrickTerm> terms() const override { return {{term_, region_}}; }
   bool linear() const override { return law_affine<Law>; }
+  // A pressure read relative to a moving foundation changes with the time.
+  bool time_dependent() const override { return normal_ && foundation_moves(normal_->motion()); }
   const Law& law() const { return *law_; }
   const std::string& region() const { return region_; }
 

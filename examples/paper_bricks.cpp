@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     // Contact status at the final time: the nodes of the bottom where the model's normal brick gives a
     // pressure, i.e. (damped response) that still move into the foundation, v.n > 0.
     const ContactStatus status = contact_status(*normal, model.space("v"), contact_nodes(model.space("v"), "bottom"),
-                                                model.values("v"), model.values("v"), 0.0);
+                                                model.values("v"), model.values("v"), 0.0, model.time());
     std::printf("contact at T: %d of %d bottom nodes in compression\n", status.in_contact, status.nodes);
     std::printf("%d steps, %d Newton iterations (at most %d per step), %.2f s; results in %s\n", run.steps,
                 run.newton_iterations_total, run.newton_iterations_max_per_step, run.wall_seconds,

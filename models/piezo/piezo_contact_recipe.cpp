@@ -68,16 +68,20 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
   if (electric) {
     for (const std::string& region : spec.grounded)
       m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("phi", region)));
+    for (const Electrode& electrode : spec.electrodes) add_electrode(m, electrode);
     if (spec.volume_charge)
       m.add_brick(std::make_shared<VolumeChargeBrick>(spec.volume_charge, LoadTime::Varying, spec.body));
     for (const SurfaceLoad& q : spec.surface_charges)
       m.add_brick(std::make_shared<SurfaceChargeBrick>(q.load, q.time, q.region));
   }
 
+  require(electric || spec.electrodes.empty(), "electrodes: a purely mechanical body (no piezo_E, permittivity_beta) "
+          "has no potential to drive");
   if (!spec.contact.empty()) {
     require(spec.mesh->has_region(spec.contact) && spec.mesh->region_kind(spec.contact) == RegionKind::Faces,
             "regions.contact: '", spec.contact, "' is not a face region of the mesh");
-    const ContactSurface surface{spec.contact, {}, {}};
+    ContactSurface surface{spec.contact, {}, {}};
+    if (spec.foundation_motion && spec.foundation_motion->moves()) surface.fields.motion = spec.foundation_motion;
     const auto normal = choose(m, normal_law_registry(), spec.normal).create(surface);
     m.add_brick(normal);
     if (auto friction = choose(m, friction_law_registry(), spec.friction).create(surface, normal)) m.add_brick(friction);
@@ -90,11 +94,14 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
     const std::string argument = built.contact_argument;
     const double threshold = spec.slip_threshold;
     auto status = [normal, nodes = built.contact_nodes, argument, threshold](const Model& model) {
-      return contact_status(*normal, model.space("v"), nodes, model.values(argument), model.values("v"), threshold);
+      return contact_status(*normal, model.space("v"), nodes, model.values(argument), model.values("v"), threshold,
+                            model.time());
     };
     m.add_diagnostic("contact_nodes_in_compression", [=](const Model& model) { return double(status(model).in_contact); });
     m.add_diagnostic("contact_nodes_in_slip", [=](const Model& model) { return double(status(model).sliding); });
   } else {
+    require(!spec.foundation_motion || !spec.foundation_motion->moves(),
+            "foundation motion: it needs a contact region (regions.contact)");
     require(spec.foundation.name == "insulated", "foundation '", spec.foundation.name,
             "' needs a contact region (regions.contact)");
   }

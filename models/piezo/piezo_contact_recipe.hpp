@@ -20,7 +20,9 @@
 #include "bricks/contact_status.hpp"
 #include "bricks/normal_pressure.hpp"
 #include "bricks/source_bricks.hpp"
+#include "bricks/foundation_motion.hpp"
 #include "models/model.hpp"
+#include "models/piezo/electrodes.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {
@@ -44,11 +46,14 @@ struct PiezoContactSpec {
   Eigen::MatrixXd A, B, E, beta;
   std::vector<std::string> clamped;   // v = 0 (u = u0 stays)
   std::vector<std::string> grounded;  // phi = 0
+  std::vector<Electrode> electrodes;  // phi = V(t), each with its charge and current (electrodes.hpp)
   std::vector<SurfaceLoad> tractions;
   Load body_force;                    // optional
   Load volume_charge;                 // optional
   std::vector<SurfaceLoad> surface_charges;
   std::string contact;                // face region; empty: no contact
+  // The foundation's velocity V_f(t) (null: at rest): the contact laws read the body's motion relative to it.
+  std::shared_ptr<const FoundationMotion> foundation_motion;
   // Registered law names with their parameters (bricks/law_registry.hpp); parameters left out take
   // their declared defaults, and a required one must be given.
   Choice normal{"linear_damped", {}};

@@ -17,6 +17,7 @@
 #include "models/scene/memory_estimate.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registered_keys.hpp"
+#include "models/scene/scene_time_function.hpp"
 #include "models/solvers/condensed_solve.hpp"
 
 namespace pc {
@@ -224,7 +225,7 @@ std::vector<std::string> read_vtu_fields(const Json& list, bool electric) {
 
 const std::vector<SceneVtuField>& scene_vtu_fields() {
   static const std::vector<SceneVtuField> fields = {
-      {"v", false}, {"u", false}, {"phi", true}, {"contact_pressure", false}, {"strain", false},
+      {"v", false}, {"u", false}, {"phi", true}, {"contact_pressure", false}, {"contact_state", false}, {"strain", false},
       {"stress", false}, {"von_mises", false}, {"electric_field", true}, {"electric_displacement", true}};
   return fields;
 }
@@ -245,7 +246,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
   }).value_or("unnamed");
   problems.check_void([&] {
     require_known_keys(json, {"name", "about", "plugins", "mesh", "regions", "material", "contact", "foundation", "loads",
-                              "bricks", "time", "solver", "output"});
+                              "electrodes", "bricks", "time", "solver", "output"});
   });
   // Plugins first: the laws they register are names the rest of the scene may use.
   if (const auto plugins = json.find("plugins")) {
@@ -414,12 +415,44 @@ Scene load_scene(const Json& json, const std::string& directory) {
       require(!find_parameter(normal.parameters, d.name), "scene: 'contact.", d.name, "' would be read by both ",
               chosen_normal.label, " and ", chosen_friction.label, ": laws paired in one contact object need "
               "distinct parameter names");
-    require_read_keys(c, {"law_normal", "law_tangential"}, {chosen_normal, chosen_friction},
+    require_read_keys(c, {"law_normal", "law_tangential", "foundation_velocity"}, {chosen_normal, chosen_friction},
                       {registered_parameters("law_normal", normal_law_registry()),
                        registered_parameters("law_tangential", friction_law_registry())});
     spec.normal = {normal.name, read_parameters(c, chosen_normal)};
     spec.friction = {friction.name, read_parameters(c, chosen_friction)};
+    if (const auto velocity = c.find("foundation_velocity")) {
+      const std::vector<Json> components = velocity->as_array();
+      require(int(components.size()) == dim, "scene: 'contact.foundation_velocity' must list ", dim,
+              " time functions (one per component), got ", components.size());
+      auto motion = std::make_shared<FoundationMotion>();
+      for (int d = 0; d < dim; ++d) motion->velocity[d] = time_function_from_json(components[d]);
+      spec.foundation_motion = motion;
+    }
   });
+
+  // Driven electrodes: phi = V(t) on face regions, each reporting its charge and current.
+  if (const auto electrodes = json.find("electrodes")) {
+    problems.check_void([&] {
+      require(electric, "scene: 'electrodes': a purely mechanical body (no material.piezo_E) has no potential to drive");
+      std::vector<std::string> names;
+      for (const Json& item : electrodes->as_array()) {
+        problems.check_void([&] {
+          require_known_keys(item, {"name", "region", "voltage"});
+          Electrode electrode{item.at("name").as_string(), item.at("region").as_string(),
+                              time_function_from_json(item.at("voltage"))};
+          require_file_name(item.at("name"), electrode.name);
+          require(std::find(names.begin(), names.end(), electrode.name) == names.end(), "scene: '", item.path(),
+                  ".name': electrode '", electrode.name, "' is named twice");
+          names.push_back(electrode.name);
+          if (spec.mesh) require_region(*spec.mesh, item.at("region"), electrode.region, RegionKind::Faces);
+          for (const std::string& g : spec.grounded)
+            require(g != electrode.region, "scene: '", item.path(), ".region': '", g,
+                    "' is grounded (regions.grounded) and cannot be an electrode too");
+          spec.electrodes.push_back(std::move(electrode));
+        });
+      }
+    });
+  }
 
   problems.check_void([&] {
     const Json& f = json.at("foundation");

@@ -30,6 +30,7 @@
 #include "models/scene/run_timing.hpp"
 #include "models/scene/time_estimate.hpp"
 #include "models/output/result_series.hpp"
+#include "models/piezo/electrodes.hpp"
 #include "models/piezo/initial_potential.hpp"
 
 namespace pc {
@@ -42,15 +43,12 @@ double probe(const Model& m, const PointLocator& locator, const std::string& fie
   return evaluate_at(m.space(field), m.values(field), locator, x.data())[component];
 }
 
-// Contact pressure at the mesh nodes (zero off the contact boundary), as VTU point data: the model's own
-// normal brick at the contact nodes, each split against its own normal.
-std::vector<double> nodal_contact_pressure(const PiezoContactModel& built) {
+// Values at the contact nodes spread onto the mesh nodes (zero off the contact boundary), as VTU point data.
+std::vector<double> on_mesh_nodes(const PiezoContactModel& built, const std::vector<double>& p) {
   const Model& m = *built.model;
   std::vector<double> pressure(m.mesh().num_nodes(), 0.0);
   if (!built.normal) return pressure;
   const FESpace& space = m.space("v");
-  const std::vector<double> p =
-      nodal_contact_pressure(*built.normal, space, built.contact_nodes, m.values(built.contact_argument));
   // Mesh vertices are the first dofs of each cell; a P2 space's other nodes are not mesh nodes.
   std::map<int, int> vertex_of_dof;
   for (int c = 0; c < m.mesh().num_cells(); ++c) {
@@ -62,6 +60,30 @@ std::vector<double> nodal_contact_pressure(const PiezoContactModel& built) {
     if (const auto it = vertex_of_dof.find(built.contact_nodes.scalar_dofs[i]); it != vertex_of_dof.end())
       pressure[it->second] = p[i];
   return pressure;
+}
+
+// The model's own normal brick at the contact nodes, each split against its own normal, at the model's time.
+std::vector<double> contact_node_pressure(const PiezoContactModel& built) {
+  const Model& m = *built.model;
+  if (!built.normal) return {};
+  return nodal_contact_pressure(*built.normal, m.space("v"), built.contact_nodes, m.values(built.contact_argument),
+                                m.time());
+}
+
+// Contact pressure at the mesh nodes.
+std::vector<double> nodal_contact_pressure(const PiezoContactModel& built) {
+  return on_mesh_nodes(built, contact_node_pressure(built));
+}
+
+// 0 separated, 1 sticking, 2 slipping (bricks/contact_status.hpp) at the mesh nodes; slip relative to the foundation.
+std::vector<double> contact_state_on_mesh_nodes(const PiezoContactModel& built, double slip_threshold) {
+  const Model& m = *built.model;
+  if (!built.normal) return on_mesh_nodes(built, {});
+  const std::vector<double> slip =
+      nodal_slip_speed(m.space("v"), built.contact_nodes, m.values("v"), built.normal->motion(), m.time());
+  std::vector<double> state;
+  for (ContactState s : nodal_contact_state(contact_node_pressure(built), slip, slip_threshold)) state.push_back(double(s));
+  return on_mesh_nodes(built, state);
 }
 
 std::string describe_duration(double seconds) {
@@ -124,8 +146,8 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
     const FESpace& vspace = m.space("v");
     const BoundaryNodes nodes = boundary_nodes(vspace, scene.spec.contact, 0);
     const ContactNodes& contact = built.contact_nodes;
-    const std::vector<double> pressure = nodal_contact_pressure(*built.normal, vspace, contact, m.values(built.contact_argument));
-    const std::vector<double> slip = nodal_slip_speed(vspace, contact, m.values("v"));
+    const std::vector<double> pressure = nodal_contact_pressure(*built.normal, vspace, contact, m.values(built.contact_argument), m.time());
+    const std::vector<double> slip = nodal_slip_speed(vspace, contact, m.values("v"), built.normal->motion(), m.time());
     std::vector<double> phi;
     if (electric) phi = values_at_nodes(nodes, m.space("phi"), m.values("phi"), 0);
     std::vector<std::vector<double>> rows;
@@ -392,7 +414,10 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
   const bool electric = m.has_field("phi");
-  const std::vector<std::string> history_header = history_columns(dim);
+  // Each electrode's V, Q and I join the history's columns.
+  ElectrodeMeter electrodes(scene.spec.electrodes);
+  std::vector<std::string> history_header = history_columns(dim);
+  for (const std::string& column : electrodes.columns()) history_header.push_back(column);
   const std::string checkpoint_path = dir + "/checkpoint.bin";
   double earlier_wall_seconds = 0;  // of the run's part before a resume
 
@@ -417,6 +442,10 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       restore_model_state(m, *built.scheme, checkpoint);
       options.resume = restore_stepper_state(checkpoint);
       restore_totals(checkpoint, result, earlier_wall_seconds);
+      std::map<std::string, double> meter_state;
+      for (const auto& [key, value] : checkpoint.numbers)
+        if (key.starts_with("electrodes.")) meter_state[key] = value;
+      electrodes.restore(meter_state);
       if (writer)
         history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_header, options.resume->steps));
       series->continue_from(restore_series(checkpoint));
@@ -493,7 +522,8 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     done = r.state;
     require_finite_state(model, when(r));
     timed_output([&] {
-      const std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
+      std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
+      for (const ElectrodeReading& e : electrodes.read(model)) row.insert(row.end(), {e.voltage, e.charge, e.current});
       require_finite_rows(when(r) + ": history.csv", history_header, {row});
       if (history) history->row(row);
     });
@@ -513,7 +543,10 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     }
   };
   callbacks.on_output = [&](const Model& model, const StepRecord& r) {
-    if (r.step == 0) add_phases(r.newton);  // the initial potential's solve (empty without a potential)
+    if (r.step == 0) {
+      add_phases(r.newton);  // the initial potential's solve (empty without a potential)
+      electrodes.read(model);  // the charges the first step's currents start from
+    }
     require_finite_state(model, when(r));
     if (!series) return;
     timed_output([&] {
@@ -523,6 +556,8 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       add_piezo_output(writer, model, {}, [&](const std::string& name) { return out.writes_vtu_field(name); });
       if (out.writes_vtu_field("contact_pressure"))
         writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
+      if (out.writes_vtu_field("contact_state"))
+        writer.add_point_data("contact_state", 1, contact_state_on_mesh_nodes(built, out.slip_threshold));
       const std::string bad = writer.non_finite_array();
       require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
       series->write(r.step, r.time, writer);
@@ -539,6 +574,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
         const double wall =
             earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         save_totals(result, wall, checkpoint);  // a resumed run counts this checkpoint's own writing as other
+        for (const auto& [key, value] : electrodes.state()) checkpoint.numbers[key] = value;
         save_series(*series, checkpoint);
         write_checkpoint(checkpoint_path, checkpoint);
         if (run_options.after_checkpoint) run_options.after_checkpoint();

@@ -664,7 +664,7 @@ TEST(ContactStatus, CountsPressedAndSlidingNodes) {
     EXPECT_EQ(n[0], 0.0);
     EXPECT_EQ(n[1], -1.0);
   }
-  const ContactStatus status = contact_status(*normal, c.space("v"), nodes, v, v, 1e-6);
+  const ContactStatus status = contact_status(*normal, c.space("v"), nodes, v, v, 1e-6, 0.0);
   EXPECT_EQ(status.nodes, 3);
   EXPECT_EQ(status.in_contact, 2);
   EXPECT_EQ(status.sliding, 1);

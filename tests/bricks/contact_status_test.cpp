@@ -47,8 +47,8 @@ TEST(ContactNodes, ACurvedSurfaceIsSplitAlongEachNodesOwnNormal) {
   });
   NormalResponseBrick<LinearDampedResponse> normal("inner");
   normal.update(ConstantTable().set("c_nu", c_nu));
-  const std::vector<double> pressure = nodal_contact_pressure(normal, space, nodes, v);
-  const std::vector<double> slip = nodal_slip_speed(space, nodes, v);
+  const std::vector<double> pressure = nodal_contact_pressure(normal, space, nodes, v, 0.0);
+  const std::vector<double> slip = nodal_slip_speed(space, nodes, v, nullptr, 0.0);
   // Interior nodes: the mean of two chords' normals is exactly radial on this uniform arc. The two end
   // nodes have one chord each, whose normal is half a segment, delta = pi / (4 n), off the radius: there
   // v.n = s cos(delta) +- w sin(delta). (The first face's normal would be up to 90 degrees off.)
@@ -62,12 +62,12 @@ TEST(ContactNodes, ACurvedSurfaceIsSplitAlongEachNodesOwnNormal) {
   for (double p : pressure) exact += std::abs(p - c_nu * s) < 1e-12 * c_nu * s;
   EXPECT_EQ(exact, n - 1) << "the interior nodes see the exact radial normal";
 
-  const ContactStatus status = contact_status(normal, space, nodes, v, v, 0.5 * w);
+  const ContactStatus status = contact_status(normal, space, nodes, v, v, 0.5 * w, 0.0);
   EXPECT_EQ(status.nodes, n + 1);
   EXPECT_EQ(status.in_contact, n + 1);
   EXPECT_EQ(status.sliding, n + 1);
   // Lifting off (+e_r) leaves no node in contact.
-  const ContactStatus lifted = contact_status(normal, space, nodes, -v, -v, 0.5 * w);
+  const ContactStatus lifted = contact_status(normal, space, nodes, -v, -v, 0.5 * w, 0.0);
   EXPECT_EQ(lifted.in_contact, 0);
 }
 

@@ -16,6 +16,7 @@
 
 #include "models/scene/json.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "support/csv_table.hpp"
 #include "support/error_and_temp_dir.hpp"
 #include "support/shipped_scenes.hpp"
 #include "support/simplex_edges.hpp"
@@ -42,32 +43,8 @@ const std::vector<std::string> kCoarseBox = [] {
 const std::vector<std::string> kCoarsePaper = {"mesh.nx=6", "mesh.ny=2", "time.steps=4",
                                                R"(output.grid={"x": [0, 0.03, 7], "y": [0, 0.01, 3]})"};
 
-struct Table {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  int column(const std::string& name) const {
-    const auto it = std::find(columns.begin(), columns.end(), name);
-    EXPECT_NE(it, columns.end()) << "no column " << name;
-    return it == columns.end() ? 0 : int(it - columns.begin());
-  }
-};
-
-Table read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  Table t;
-  std::string line;
-  std::getline(in, line);
-  std::stringstream header(line);
-  for (std::string name; std::getline(header, name, ',');) t.columns.push_back(name);
-  while (std::getline(in, line)) {
-    std::vector<double> row;
-    std::stringstream fields(line);
-    for (std::string field; std::getline(fields, field, ',');) row.push_back(std::strtod(field.c_str(), nullptr));
-    t.rows.push_back(row);
-  }
-  return t;
-}
+using testing::read_csv;
+using testing::Table;
 
 // One foundation's run into a fresh directory, its model kept for the nodal values.
 class RunFixture : public testing::TemporaryDirectoryTest {

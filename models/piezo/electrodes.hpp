@@ -1,0 +1,60 @@
+#pragma once
+// Driven electrodes: phi = V(t) on a face region (a Dirichlet condition with a time function), and what
+// each reports, its charge and current.
+//
+// The charge is the reaction of the potential condition: the electric residual summed over the
+// electrode's dofs. With R_phi(psi) = -integral D . grad psi (sources aside) and the electrode's shape
+// functions summing to 1 on it, that sum is -integral over the electrode of D . n, the free charge on the
+// conductor side of the interface (D vanishes in the metal, n points out of the body). It is exact for the
+// discrete solution: no flux is recovered from gradients. The current I = dQ/dt is the backward
+// difference over the step, the scheme's own rate, so that the work of an electrode, sum V_n I_n k_n,
+// is what the discrete balance of energy holds.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "assembly/time_function.hpp"
+#include "models/model.hpp"
+
+namespace pc {
+
+struct Electrode {
+  std::string name;    // of the history columns: V_<name>, Q_<name>, I_<name>
+  std::string region;  // a face region of the mesh
+  TimeFunction voltage;
+};
+
+// Adds the electrode's condition phi = V(t) (a DirichletBrick on `potential`) to a model not finalized yet.
+void add_electrode(Model& model, const Electrode& electrode, const std::string& potential = "phi");
+
+// The charge on a face region where the potential is prescribed, from the model's last residual.
+double electrode_charge(const Model& model, const std::string& region, const std::string& potential = "phi");
+
+struct ElectrodeReading {
+  double voltage = 0, charge = 0, current = 0;
+};
+
+// Reads the electrodes after each accepted state: V(t), Q, and I = (Q - Q_previous) / (t - t_previous)
+// (0 at the first reading). Its previous readings can be saved and restored so a resumed run continues
+// the current exactly.
+class ElectrodeMeter {
+ public:
+  ElectrodeMeter(std::vector<Electrode> electrodes, std::string potential = "phi");
+  const std::vector<Electrode>& electrodes() const { return electrodes_; }
+  // One reading per electrode, in the order given; remembers the charges and the time for the next one.
+  std::vector<ElectrodeReading> read(const Model& model);
+  // The history columns V_<name>, Q_<name>, I_<name> of each electrode.
+  std::vector<std::string> columns() const;
+  // The state the next reading's current depends on, by name, and its restoration.
+  std::map<std::string, double> state() const;
+  void restore(const std::map<std::string, double>& state);
+
+ private:
+  std::vector<Electrode> electrodes_;
+  std::string potential_;
+  std::vector<double> previous_charge_;
+  double previous_time_ = 0;
+  bool has_previous_ = false;
+};
+
+}  // namespace pc
