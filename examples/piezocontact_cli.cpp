@@ -1,6 +1,7 @@
 // The command-line runner (installed as `piezocontact`):
 //   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]
 //   piezocontact check SCENE [--set key=value ...]
+//   piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ]
 //   piezocontact list [--plugin LIB ...]
 //   piezocontact describe [NAME] [--markdown] [--plugin LIB ...]
 // `run` validates the whole scene, then runs each foundation it lists and writes the results (see
@@ -9,12 +10,16 @@
 // any scene value by its dotted path: --set contact.c_nu=1e14 --set mesh.nx=120. `list` and `describe`
 // print what a scene can name (laws, time schemes, solvers) with every parameter, from the registries;
 // --plugin loads a plugin first (a scene loads those it names in "plugins"). --resume continues the run
-// recorded in DIR/manifest.json (same scene and overrides) from its last checkpoint.
+// recorded in DIR/manifest.json (same scene and overrides) from its last checkpoint. `modes` writes the
+// N (default 6) eigenfrequencies nearest to HZ (default 0: the lowest) and their shapes into
+// DIR/<scene>/modes/ (models/scene/scene_modes.hpp).
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <new>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "assembly/error.hpp"
@@ -22,15 +27,35 @@
 #include "models/scene/interrupts.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
+#include "models/scene/scene_modes.hpp"
 #include "models/scene/scene_runner.hpp"
 #include "models/scene/time_estimate.hpp"
 
 namespace {
 
+// A number option's value; anything else ends the program with an error naming the option and the text.
+template <class T>
+T number(const std::string& option, const std::string& text) {
+  size_t used = 0;
+  T value{};
+  try {
+    if constexpr (std::is_same_v<T, int>) value = std::stoi(text, &used);
+    else value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) {
+    std::fprintf(stderr, "error: %s must be a number, got '%s'\n", option.c_str(), text.c_str());
+    std::exit(2);
+  }
+  return value;
+}
+
 int usage() {
   std::fprintf(stderr,
                "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]\n"
                "       piezocontact check SCENE [--set key=value ...]\n"
+               "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ]\n"
                "       piezocontact list [--plugin LIB ...]\n"
                "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n");
   return 2;
@@ -86,11 +111,12 @@ int main(int argc, char** argv) {
   }
   if (argc < 3) return usage();
   const std::string command = argv[1];
-  if (command != "run" && command != "check") return usage();
+  if (command != "run" && command != "check" && command != "modes") return usage();
   const std::string scene_path = argv[2];
   std::vector<std::string> overrides;
   pc::SceneRunOptions options;
   options.output_directory = "results";
+  pc::ModalOptions modal;
   for (int i = 3; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -112,6 +138,8 @@ int main(int argc, char** argv) {
     else if (arg == "--no-sweep") options.sweep = false;
     else if (arg == "--quiet") options.progress = false;
     else if (arg == "--resume") options.resume = true;
+    else if (arg == "--count" && command == "modes") modal.modes = number<int>(arg, value());
+    else if (arg == "--shift" && command == "modes") modal.shift_hz = number<double>(arg, value());
     else {
       std::fprintf(stderr, "error: unknown option '%s'\n", arg.c_str());
       return usage();
@@ -119,6 +147,19 @@ int main(int argc, char** argv) {
   }
   try {
     const pc::Scene scene = pc::load_scene_file(scene_path, overrides);
+    if (command == "modes") {
+      const std::string directory = options.output_directory + "/" + scene.name + "/modes";
+      const pc::ModalResult modes = pc::write_scene_modes(scene, directory, modal);
+      if (pc::processes::is_writer()) {
+        std::printf("%zu modes of '%s' (%s), nearest to %g Hz, in %d Lanczos restarts and %d solves:\n",
+                    modes.frequencies_hz.size(), scene.name.c_str(), scene.mesh_description.c_str(), modal.shift_hz,
+                    modes.lanczos_iterations, modes.operator_applications);
+        for (size_t k = 0; k < modes.frequencies_hz.size(); ++k)
+          std::printf("  mode %zu: %.6g Hz\n", k + 1, modes.frequencies_hz[k]);
+        std::printf("shapes and table in %s\n", directory.c_str());
+      }
+      return 0;
+    }
     if (command == "check") {
       // Building each foundation's model runs every check the run would make before its first step.
       int dofs = 0;

@@ -455,6 +455,21 @@ const CsrMatrix& Model::jacobian() const {
   return it->second->matrix->matrix();
 }
 
+void Model::keep_brick_residuals(const std::vector<int>& bricks) {
+  for (int b : bricks) {
+    require(b >= 0 && b < int(bricks_.size()), "Model: brick index ", b, " out of range (", bricks_.size(), " bricks)");
+    kept_residuals_[b];
+  }
+}
+
+const Eigen::VectorXd& Model::brick_residual(int brick, const std::string& unknown) const {
+  const auto kept = kept_residuals_.find(brick);
+  require(kept != kept_residuals_.end(), "Model: the residual of brick ", brick, " is not kept (keep_brick_residuals)");
+  const auto it = kept->second.find(unknown);
+  require(it != kept->second.end(), "Model: no residual of brick ", brick, " for '", unknown, "' (assemble first)");
+  return it->second;
+}
+
 const Eigen::VectorXd& Model::field_residual(const std::string& unknown) const {
   const auto it = field_residuals_.find(unknown);
   require(it != field_residuals_.end(), "Model: no residual for '", unknown, "' (assemble first)");
@@ -578,10 +593,13 @@ void Model::assemble(bool tangent) {
     residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(net));
     round_off_scales_[u] = std::max({round_off_scales_[u], std::sqrt(net), std::sqrt(gross)});
   };
-  auto measure_and_add = [&](const std::string& u) {
+  for (auto& [b, kept] : kept_residuals_)
+    for (const std::string& u : unknown_names_) kept[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
+  auto measure_and_add = [&](const std::string& u, int b) {
     Eigen::VectorXd& r = brick_residual.at(u);
     measure(u, r, 0);
     field_residuals_.at(u) += r;
+    if (const auto kept = kept_residuals_.find(b); kept != kept_residuals_.end()) kept->second.at(u) = r;
     r.setZero();
   };
 
@@ -629,7 +647,7 @@ void Model::assemble(bool tangent) {
       for (const std::string& u : touched) {
         Eigen::VectorXd& share = brick_residual.at(u);  // distributed: of this process's elements
         processes::sum({share.data(), size_t(share.size())});
-        measure_and_add(u);
+        measure_and_add(u, b);
       }
       continue;
     }
@@ -683,7 +701,7 @@ void Model::assemble(bool tangent) {
         add_measured_product(u, K, this->values(bt.trial_fields[k]), brick_residual.at(u));
         touched.insert(u);
       }
-    for (const std::string& u : touched) measure_and_add(u);
+    for (const std::string& u : touched) measure_and_add(u, b);
   }
 
   if (tangent) {

@@ -116,6 +116,11 @@ class Model : public DataView, public NonlinearProblem {
   const std::vector<int>& nonlinear_dofs() override;
   // Residual of one unknown in its field numbering (all dofs, constrained ones included): reactions.
   const Eigen::VectorXd& field_residual(const std::string& unknown) const;
+  // Keeps these bricks' own residuals at every assembly from now on, so that what one brick does can be
+  // read (the force a contact brick exerts, the power it absorbs). brick_residual() is the kept brick's
+  // contribution to field_residual(unknown) at the last assembly: zeros for an unknown it does not test.
+  void keep_brick_residuals(const std::vector<int>& bricks);
+  const Eigen::VectorXd& brick_residual(int brick, const std::string& unknown) const;
   // The unknowns, in the layout's order.
   std::vector<ProblemBlock> blocks() const override;
   // Per unknown, the norm (on free dofs) of the largest single brick contribution to the last residual:
@@ -176,6 +181,7 @@ class Model : public DataView, public NonlinearProblem {
   std::map<std::vector<std::string>, std::unique_ptr<System>> systems_;
   std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
   std::map<std::string, Eigen::VectorXd> field_residuals_;
+  std::map<int, std::map<std::string, Eigen::VectorXd>> kept_residuals_;  // per kept brick, per unknown
   std::map<std::string, double> residual_scales_;
   std::map<std::string, double> round_off_scales_;
   std::vector<double> product_rows_, gross_rows_;  // scratch of the residual's products, per row

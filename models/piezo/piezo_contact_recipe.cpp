@@ -83,8 +83,10 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
     ContactSurface surface{spec.contact, {}, {}};
     if (spec.foundation_motion && spec.foundation_motion->moves()) surface.fields.motion = spec.foundation_motion;
     const auto normal = choose(m, normal_law_registry(), spec.normal).create(surface);
-    m.add_brick(normal);
-    if (auto friction = choose(m, friction_law_registry(), spec.friction).create(surface, normal)) m.add_brick(friction);
+    built.contact_bricks.push_back(m.add_brick(normal));
+    if (auto friction = choose(m, friction_law_registry(), spec.friction).create(surface, normal))
+      built.contact_bricks.push_back(m.add_brick(friction));
+    m.keep_brick_residuals(built.contact_bricks);
     if (electric)
       if (auto foundation = choose(m, foundation_law_registry(), spec.foundation).create(surface, normal))
         m.add_brick(foundation);

@@ -77,6 +77,8 @@ struct PiezoContactModel {
   std::shared_ptr<const NormalContactBrick> normal;
   std::string contact_argument;  // "v", or "u" for a law that reads the displacement
   ContactNodes contact_nodes;
+  // The normal and friction bricks' indices in the model; their residuals are kept (contact_resultant.hpp).
+  std::vector<int> contact_bricks;
 };
 
 // Validates the spec (tensor shapes and definiteness, regions, law names and parameters) with messages

@@ -30,6 +30,7 @@
 #include "models/scene/run_timing.hpp"
 #include "models/scene/time_estimate.hpp"
 #include "models/output/result_series.hpp"
+#include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/electrodes.hpp"
 #include "models/piezo/initial_potential.hpp"
 
@@ -418,6 +419,12 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   ElectrodeMeter electrodes(scene.spec.electrodes);
   std::vector<std::string> history_header = history_columns(dim);
   for (const std::string& column : electrodes.columns()) history_header.push_back(column);
+  // With contact, the foundation's resultant force on the body and its power.
+  const bool contact = built.normal != nullptr;
+  if (contact) {
+    for (int d = 0; d < dim; ++d) history_header.push_back(std::string("contact_f") + "xyz"[d]);
+    history_header.push_back("contact_power");
+  }
   const std::string checkpoint_path = dir + "/checkpoint.bin";
   double earlier_wall_seconds = 0;  // of the run's part before a resume
 
@@ -524,6 +531,11 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     timed_output([&] {
       std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
       for (const ElectrodeReading& e : electrodes.read(model)) row.insert(row.end(), {e.voltage, e.charge, e.current});
+      if (contact) {
+        const ContactResultant resultant = contact_resultant(built);
+        row.insert(row.end(), resultant.force.begin(), resultant.force.begin() + dim);
+        row.push_back(resultant.power);
+      }
       require_finite_rows(when(r) + ": history.csv", history_header, {row});
       if (history) history->row(row);
     });

@@ -19,6 +19,7 @@
 #include "bricks/dirichlet_brick.hpp"
 #include "bricks/piezo_materials.hpp"
 #include "bricks/voigt.hpp"
+#include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/electrodes.hpp"
 #include "models/piezo/initial_potential.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
@@ -228,12 +229,19 @@ TEST(DeviceClosedForms, BlockPressedOnAMovingFoundationFeelsMuP) {
     };
     PiezoContactModel built = build_piezo_contact_model(spec);
     std::vector<double> holder;
-    run(built, 2e-2, 8, [&](const Model& m) { holder.push_back(reaction(m, "v", "top", 0)); });
+    ContactResultant resultant;
+    run(built, 2e-2, 8, [&](const Model& m) {
+      holder.push_back(reaction(m, "v", "top", 0));
+      resultant = contact_resultant(built);
+    });
     // Once the block's shear has settled (its change shrinks a thousandfold per step) it stands still
     // along x, so the slip is the foundation's: the drag is mu p L V / sqrt(V^2 + eps^2), which is mu p L
     // as eps / V -> 0.
     const double drag = kMu * pressure * kLength * v_along / std::sqrt(v_along * v_along + eps * eps);
     for (size_t n = 6; n < holder.size(); ++n) EXPECT_NEAR(holder[n], -drag, 1e-9 * drag) << "eps " << eps << " step " << n;
+    // The foundation's resultant on the block: the drag along its motion, the pressure's force up.
+    EXPECT_NEAR(resultant.force[0], drag, 1e-9 * drag);
+    EXPECT_NEAR(resultant.force[1], pressure * kLength, 1e-9 * pressure * kLength);
     if (eps < 1e-6) {
       EXPECT_NEAR(holder.back(), -kMu * pressure * kLength, 1e-9 * drag);
     }
