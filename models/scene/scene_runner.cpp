@@ -32,6 +32,7 @@
 #include "models/output/result_series.hpp"
 #include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/electrodes.hpp"
+#include "models/piezo/energy_books.hpp"
 #include "models/piezo/initial_potential.hpp"
 
 namespace pc {
@@ -425,6 +426,18 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     for (int d = 0; d < dim; ++d) history_header.push_back(std::string("contact_f") + "xyz"[d]);
     history_header.push_back("contact_power");
   }
+  // Backward Euler's energy books (energy_books.hpp), whose identities are that scheme's; a mechanical
+  // model starts them at rest (u0 = 0), as it has no initial solve to assemble its stored energy at.
+  std::unique_ptr<EnergyBooks> books;
+  const bool starts_at_rest = std::all_of(scene.u0.begin(), scene.u0.end(), [](double c) { return c == 0; });
+  if (scene.spec.scheme.name == "backward_euler" && (built.electric || starts_at_rest)) {
+    double v0_squared = 0;
+    for (double c : scene.v0) v0_squared += c * c;
+    double volume = 0;
+    for (int c = 0; c < mesh.num_cells(); ++c) volume += mesh.cell_measure(c);
+    books = std::make_unique<EnergyBooks>(built, 0.5 * scene.spec.rho * v0_squared * volume);
+    for (const std::string& column : EnergyBooks::columns()) history_header.push_back(column);
+  }
   const std::string checkpoint_path = dir + "/checkpoint.bin";
   double earlier_wall_seconds = 0;  // of the run's part before a resume
 
@@ -453,6 +466,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       for (const auto& [key, value] : checkpoint.numbers)
         if (key.starts_with("electrodes.")) meter_state[key] = value;
       electrodes.restore(meter_state);
+      if (books) books->restore(checkpoint.vectors);
       if (writer)
         history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_header, options.resume->steps));
       series->continue_from(restore_series(checkpoint));
@@ -536,6 +550,10 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
         row.insert(row.end(), resultant.force.begin(), resultant.force.begin() + dim);
         row.push_back(resultant.power);
       }
+      if (books) {
+        books->record(model);
+        for (double value : books->row()) row.push_back(value);
+      }
       require_finite_rows(when(r) + ": history.csv", history_header, {row});
       if (history) history->row(row);
     });
@@ -558,6 +576,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     if (r.step == 0) {
       add_phases(r.newton);  // the initial potential's solve (empty without a potential)
       electrodes.read(model);  // the charges the first step's currents start from
+      if (books) books->start(model);
     }
     require_finite_state(model, when(r));
     if (!series) return;
@@ -587,6 +606,8 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
             earlier_wall_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         save_totals(result, wall, checkpoint);  // a resumed run counts this checkpoint's own writing as other
         for (const auto& [key, value] : electrodes.state()) checkpoint.numbers[key] = value;
+        if (books)
+          for (const auto& [key, value] : books->state()) checkpoint.vectors[key] = value;
         save_series(*series, checkpoint);
         write_checkpoint(checkpoint_path, checkpoint);
         if (run_options.after_checkpoint) run_options.after_checkpoint();

@@ -21,35 +21,15 @@
 #include "bricks/voigt.hpp"
 #include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/electrodes.hpp"
-#include "models/piezo/initial_potential.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
-#include "models/solvers/newton.hpp"
-#include "models/stepper.hpp"
+#include "support/run_model.hpp"
 
 namespace pc {
 namespace {
 
-constexpr double kVolts = 100;
+using testing::run;
 
-// Runs the model from 0 to `end` in `steps` steps, the initial potential first; `after_step` sees every
-// accepted state (and the initial one, where the initial potential was solved).
-void run(PiezoContactModel& built, double end, int steps, const std::function<void(const Model&)>& after_step = {}) {
-  StepperOptions options;
-  options.end = end;
-  options.step = end / steps;
-  NewtonSolver newton;
-  StepperCallbacks callbacks;
-  if (built.electric)
-    callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, *built.scheme, newton); };
-  if (after_step) {
-    callbacks.on_output = [&](const Model& m, const StepRecord& r) {
-      if (r.step == 0 && built.electric) after_step(m);
-    };
-    callbacks.on_step = [&](const Model& m, const StepRecord&) { after_step(m); };
-  }
-  const RunSummary summary = Stepper(options).run(*built.model, *built.scheme, newton, callbacks);
-  ASSERT_TRUE(summary.completed) << summary.message;
-}
+constexpr double kVolts = 100;
 
 // Sum of one component of a field's reactions over a region's dofs.
 double reaction(const Model& m, const std::string& field, const std::string& region, int component) {

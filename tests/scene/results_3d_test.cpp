@@ -142,7 +142,9 @@ TEST_F(Results3D, HistoryHasUzAtTheCorner) {
   run(kBox, kCoarseBox, "conductive");
   const Table history = read_csv(directory_ / "history.csv");
   EXPECT_EQ(history.columns, (std::vector<std::string>{"t", "uy_corner", "uz_corner", "phi_center", "newton_iterations", "contact_fx",
-                                                       "contact_fy", "contact_fz", "contact_power"}));
+                                                       "contact_fy", "contact_fz", "contact_power", "E_kinetic",
+                                                       "E_elastic", "E_electric", "W_numerical", "W_viscous", "W_contact",
+                                                       "W_coupling", "W_other", "W_external", "W_boundary", "E_balance"}));
   ASSERT_EQ(history.rows.size(), size_t(4));  // one row per step
   EXPECT_EQ(history.rows.back()[2], summary_.at("uz_corner").as_number());
   EXPECT_EQ(history.rows.back()[1], summary_.at("uy_corner").as_number());
@@ -192,7 +194,9 @@ TEST_F(Results3D, A2DRunKeepsItsColumnsAndKeysAndDescribesItsMesh) {
             (std::vector<std::string>{"x", "y", "ux", "uy", "vx", "vy", "phi"}));
   EXPECT_EQ(read_csv(directory_ / "history.csv").columns,
             (std::vector<std::string>{"t", "uy_corner", "phi_center", "newton_iterations", "contact_fx", "contact_fy",
-                                      "contact_power"}));
+                                      "contact_power", "E_kinetic", "E_elastic", "E_electric", "W_numerical",
+                                      "W_viscous", "W_contact", "W_coupling", "W_other", "W_external", "W_boundary",
+                                      "E_balance"}));
   EXPECT_EQ(summary_.at("nx").as_int(), 6);
   EXPECT_EQ(summary_.at("ny").as_int(), 2);
   for (const char* key : {"nz", "max_abs_uz", "uz_corner"}) EXPECT_FALSE(summary_.contains(key)) << key;
