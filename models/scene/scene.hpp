@@ -49,6 +49,9 @@ struct SceneOutput {
   std::array<double, 3> corner{}, center{};  // probes of history.csv and summary.json
   SceneGrid grid;
   double slip_threshold = 0;                 // m/s: a contact node with |v_tau| above it slides
+  // output.contact_history: contact_state.csv, each contact node's state at every step (contact_nodes.csv
+  // says where the nodes are)
+  bool contact_history = false;
   std::vector<double> phi_f_sweep;           // foundation voltages for Figure 5 (conductive runs)
   int sweep_steps = 0;                       // time steps of each sweep run (0: the scene's)
 };

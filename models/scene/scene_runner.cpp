@@ -442,6 +442,29 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   double earlier_wall_seconds = 0;  // of the run's part before a resume
 
   std::unique_ptr<CsvLog> history;
+  // output.contact_history: the contact nodes sorted along the surface, and their state at every step.
+  const bool contact_history = contact && scene.output.contact_history;
+  BoundaryNodes history_nodes;
+  std::vector<size_t> history_order;  // index into built.contact_nodes of each sorted node
+  std::vector<std::string> contact_header = {"t"};
+  std::unique_ptr<CsvLog> contact_log;
+  if (contact_history) {
+    history_nodes = boundary_nodes(m.space("v"), scene.spec.contact, 0);
+    const std::vector<int>& dofs = built.contact_nodes.scalar_dofs;
+    for (size_t i = 0; i < history_nodes.scalar_dofs.size(); ++i) {
+      history_order.push_back(size_t(std::lower_bound(dofs.begin(), dofs.end(), history_nodes.scalar_dofs[i]) - dofs.begin()));
+      contact_header.push_back("node_" + std::to_string(i));
+    }
+  }
+  auto contact_row = [&](const Model& model, double t) {
+    const std::vector<double> slip =
+        nodal_slip_speed(model.space("v"), built.contact_nodes, model.values("v"), built.normal->motion(), t);
+    const std::vector<ContactState> states =
+        nodal_contact_state(contact_node_pressure(built), slip, scene.output.slip_threshold);
+    std::vector<double> row = {t};
+    for (size_t k : history_order) row.push_back(double(states[k]));
+    return row;
+  };
   std::unique_ptr<ResultSeries> series;
   if (!dir.empty()) {
     std::error_code error;
@@ -469,6 +492,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       if (books) books->restore(checkpoint.vectors);
       if (writer)
         history = std::make_unique<CsvLog>(CsvLog::continue_after(dir + "/history.csv", history_header, options.resume->steps));
+      if (writer && contact_history)
+        contact_log = std::make_unique<CsvLog>(
+            CsvLog::continue_after(dir + "/contact_state.csv", contact_header, options.resume->steps));
       series->continue_from(restore_series(checkpoint));
       if (progress)
         std::printf("  [%s] resumed at step %d, t = %.6g s, from %s\n", foundation.name.c_str(), options.resume->steps,
@@ -477,6 +503,14 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       series->continue_from({});  // a series of an earlier run in this folder is not mixed in
       if (writer) {
         history = std::make_unique<CsvLog>(dir + "/history.csv", history_header);
+        if (contact_history) {
+          contact_log = std::make_unique<CsvLog>(dir + "/contact_state.csv", contact_header);
+          std::vector<std::vector<double>> where;
+          for (const auto& p : history_nodes.points) where.push_back(dim == 3 ? std::vector<double>{p[0], p[1], p[2]}
+                                                                             : std::vector<double>{p[0], p[1]});
+          write_csv(dir + "/contact_nodes.csv", dim == 3 ? std::vector<std::string>{"x", "y", "z"}
+                                                          : std::vector<std::string>{"x", "y"}, where);
+        }
         std::filesystem::remove(checkpoint_path, error);
       }
     }
@@ -556,6 +590,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       }
       require_finite_rows(when(r) + ": history.csv", history_header, {row});
       if (history) history->row(row);
+      if (contact_log) contact_log->row(contact_row(model, r.time));
     });
     if (run_options.after_step) run_options.after_step(r);
     // A line every progress_every steps, and at least every progress_seconds: no long silence.
