@@ -9,6 +9,7 @@
 
 #include "assembly/error.hpp"
 #include "assembly/linear_solver.hpp"
+#include "assembly/processes.hpp"
 
 namespace pc {
 namespace {
@@ -72,6 +73,9 @@ struct MassProduct {
 
 ModalResult modal_analysis(Model& model, const ModalOptions& o) {
   require(model.finalized(), "modal analysis: finalize the model first");
+  // Each process holds a share of the matrices; the shift-invert solves would need MUMPS on their sum.
+  require(!processes::distributed(), "modal analysis: runs on one process (this run has ", processes::count(),
+          "); run `piezocontact modes` without mpirun");
   require(o.modes >= 1, "modal analysis: modes must be >= 1, got ", o.modes);
   require(std::isfinite(o.shift_hz) && o.shift_hz >= 0, "modal analysis: shift_hz must be finite and >= 0, got ", o.shift_hz);
   for (const std::string& f : {o.displacement, o.acceleration})

@@ -14,7 +14,7 @@
 //   [[K_uu - sigma M, C^T], [C, -P]] [x; y] = [b; 0].
 // Which potential dofs are prescribed decides the electrical condition: electrodes held at a potential
 // (grounded, or driven) are short-circuited; a face with no condition carries no charge (D.n = 0). Open
-// electrodes (floating, one unknown potential) are not supported yet.
+// electrodes (floating, one unknown potential) are not supported yet, nor a distributed (MPI) model.
 #include <string>
 #include <vector>
 

@@ -22,6 +22,7 @@
 #include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/electrodes.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
+#include "support/clamped_capacitor.hpp"
 #include "support/run_model.hpp"
 
 namespace pc {
@@ -41,20 +42,12 @@ double reaction(const Model& m, const std::string& field, const std::string& reg
 // ---- 1. the clamped capacitor ----------------------------------------------------------------------
 
 TEST(DeviceClosedForms, ClampedCapacitorHoldsClampedPermittivityTimesVoltageAndItsCurrentIsCdVdt) {
-  const double length = 4e-3, thickness = 1e-3, ramp = 1e-3;
-  const PiezoTensors t = piezo_material("PZT-5H").tensors(2, Axis::y);
-  PiezoContactSpec spec;
-  spec.mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {length, thickness}, 6, 3));
-  spec.B = t.B;
-  spec.E = t.E;
-  spec.beta = t.beta;
-  spec.clamped = {"left", "right", "top", "bottom"};
-  spec.grounded = {"bottom"};
-  spec.electrodes = {{"drive", "top", TimeFunction::ramp(kVolts, ramp)}};
+  const double ramp = 1e-3;
+  const testing::ClampedCapacitor capacitor;
+  const PiezoContactSpec spec = capacitor.spec(kVolts, ramp, false);
   PiezoContactModel built = build_piezo_contact_model(spec);
-
   // Per unit depth: C = eps^S_yy L / h. Clamped, the strain is zero and D = -eps^S grad phi exactly.
-  const double capacitance = t.beta(1, 1) * length / thickness;
+  const double capacitance = capacitor.capacitance();
   ElectrodeMeter meter(spec.electrodes);
   std::vector<ElectrodeReading> readings;
   run(built, ramp, 4, [&](const Model& m) { readings.push_back(meter.read(m)[0]); });

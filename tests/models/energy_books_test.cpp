@@ -14,6 +14,7 @@
 #include "bricks/piezo_materials.hpp"
 #include "models/piezo/energy_books.hpp"
 #include "models/scene/scene.hpp"
+#include "support/clamped_capacitor.hpp"
 #include "support/run_model.hpp"
 #include "support/shipped_scenes.hpp"
 
@@ -60,19 +61,10 @@ TEST(EnergyBooks, PaperSceneBalancesEveryStepAndItsNumericalDissipationIsFirstOr
 }
 
 TEST(EnergyBooks, ClampedCapacitorStoresHalfCVSquaredAndItsElectrodeWorksTheRest) {
-  const double length = 4e-3, thickness = 1e-3, volts = 100, ramp = 1e-3;
+  const double volts = 100, ramp = 1e-3;
   const int steps = 8;
-  const PiezoTensors t = piezo_material("PZT-5H").tensors(2, Axis::y);
-  PiezoContactSpec spec;
-  spec.mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {length, thickness}, 6, 3));
-  spec.rho = t.rho;
-  spec.B = t.B;
-  spec.E = t.E;
-  spec.beta = t.beta;
-  spec.clamped = {"left", "right", "top", "bottom"};
-  spec.grounded = {"bottom"};
-  spec.electrodes = {{"drive", "top", TimeFunction::ramp(volts, ramp)}};
-  PiezoContactModel built = build_piezo_contact_model(spec);
+  const testing::ClampedCapacitor capacitor;
+  PiezoContactModel built = build_piezo_contact_model(capacitor.spec(volts, ramp, true));
   EnergyBooks books(built);
   bool started = false;
   testing::run(built, ramp, steps, [&](const Model& m) {
@@ -83,7 +75,7 @@ TEST(EnergyBooks, ClampedCapacitorStoresHalfCVSquaredAndItsElectrodeWorksTheRest
       started = true;
     }
   });
-  const double capacitance = t.beta(1, 1) * length / thickness, dv = volts / steps;
+  const double capacitance = capacitor.capacitance(), dv = volts / steps;
   const EnergyBalance& b = books.totals();
   const double stored = 0.5 * capacitance * volts * volts;
   EXPECT_NEAR(b.electric, stored, 1e-10 * stored);
