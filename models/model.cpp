@@ -593,8 +593,13 @@ void Model::assemble(bool tangent) {
     residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(net));
     round_off_scales_[u] = std::max({round_off_scales_[u], std::sqrt(net), std::sqrt(gross)});
   };
+  // Kept residuals start at zero in place (no allocation after the first assembly).
   for (auto& [b, kept] : kept_residuals_)
-    for (const std::string& u : unknown_names_) kept[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
+    for (const std::string& u : unknown_names_) {
+      Eigen::VectorXd& r = kept[u];
+      if (r.size() != space(u).num_dofs()) r = Eigen::VectorXd::Zero(space(u).num_dofs());
+      else r.setZero();
+    }
   auto measure_and_add = [&](const std::string& u, int b) {
     Eigen::VectorXd& r = brick_residual.at(u);
     measure(u, r, 0);

@@ -546,7 +546,8 @@ Scene load_scene(const Json& json, const std::string& directory) {
     const auto o = json.find("output");
     if (!o) return;
     require_known_keys(*o, {"vtu_every", "vtu_format", "vtu_fields", "progress_every", "probes", "grid",
-                            "slip_threshold", "phi_f_sweep", "sweep_steps", "checkpoint_every", "contact_history"});
+                            "slip_threshold", "phi_f_sweep", "sweep_steps", "checkpoint_every", "contact_history",
+                            "energy_books"});
     SceneOutput& out = scene.output;
     if (const auto x = o->find("vtu_every")) out.vtu_every = x->as_int_at_least(1);
     if (const auto x = o->find("vtu_format"))
@@ -594,6 +595,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
     }
     if (const auto x = o->find("slip_threshold")) out.slip_threshold = x->as_number_at_least(0);
     if (const auto x = o->find("contact_history")) out.contact_history = x->as_bool();
+    if (const auto x = o->find("energy_books")) out.energy_books = x->as_bool();
     if (const auto x = o->find("phi_f_sweep")) out.phi_f_sweep = x->as_vector();
     if (const auto x = o->find("sweep_steps")) out.sweep_steps = x->as_int_at_least(1);
   });

@@ -52,6 +52,9 @@ struct SceneOutput {
   // output.contact_history: contact_state.csv, each contact node's state at every step (contact_nodes.csv
   // says where the nodes are)
   bool contact_history = false;
+  // output.energy_books: the energy books' columns in history.csv (backward Euler; each kept brick's
+  // residual costs a copy per assembly)
+  bool energy_books = true;
   std::vector<double> phi_f_sweep;           // foundation voltages for Figure 5 (conductive runs)
   int sweep_steps = 0;                       // time steps of each sweep run (0: the scene's)
 };

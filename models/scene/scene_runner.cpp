@@ -430,7 +430,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   // model starts them at rest (u0 = 0), as it has no initial solve to assemble its stored energy at.
   std::unique_ptr<EnergyBooks> books;
   const bool starts_at_rest = std::all_of(scene.u0.begin(), scene.u0.end(), [](double c) { return c == 0; });
-  if (scene.spec.scheme.name == "backward_euler" && (built.electric || starts_at_rest)) {
+  if (scene.output.energy_books && scene.spec.scheme.name == "backward_euler" && (built.electric || starts_at_rest)) {
     double v0_squared = 0;
     for (double c : scene.v0) v0_squared += c * c;
     double volume = 0;
