@@ -97,6 +97,9 @@ void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
     for (int k = block_outer[r]; k < block_outer[r + 1]; ++k) {
       const int col = cols[block_inner[k]];
       if (col < 0) continue;
+      // Columns come in increasing order, so the slot search moves forward, except after a tied dof
+      // (DofLayout), whose column may lie behind: search that one from the row's start.
+      if (slot < end && inner[slot] > col) slot = int(std::lower_bound(inner + outer[row], inner + end, col) - inner);
       while (slot < end && inner[slot] < col) ++slot;
       require(slot < end && inner[slot] == col, "SystemMatrix: block ", handle, " has an entry (", r, ", ",
               block_inner[k], ") outside the pattern it was declared with");

@@ -42,6 +42,15 @@ struct DirichletCondition {
   std::function<void(const double* x, double t, double* out)> value;
 };
 
+// One unknown value of a component of an unknown over a region, e.g. the potential of a floating
+// electrode: the region's dofs of that component share one global index (DofLayout), so the value is
+// solved for and the region's residuals are summed (zero net charge, or the charge a source puts there).
+struct UniformValueCondition {
+  std::string unknown;
+  std::string region;
+  int component = 0;
+};
+
 class Brick {
  public:
   virtual ~Brick() = default;
@@ -57,6 +66,8 @@ class Brick {
   virtual std::vector<BrickTerm> terms() const = 0;
   // Conditions eliminated from the system (Dirichlet bricks); most bricks have none.
   virtual std::vector<DirichletCondition> dirichlet_conditions() const { return {}; }
+  // Regions where an unknown takes one value (UniformValueBrick); most bricks have none.
+  virtual std::vector<UniformValueCondition> uniform_value_conditions() const { return {}; }
 
   // Residual affine in the unknowns: tangent cached, residual by mat-vec.
   virtual bool linear() const = 0;

@@ -1,7 +1,7 @@
 // The command-line runner (installed as `piezocontact`):
 //   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]
 //   piezocontact check SCENE [--set key=value ...]
-//   piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ]
+//   piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]
 //   piezocontact list [--plugin LIB ...]
 //   piezocontact describe [NAME] [--markdown] [--plugin LIB ...]
 // `run` validates the whole scene, then runs each foundation it lists and writes the results (see
@@ -12,7 +12,8 @@
 // --plugin loads a plugin first (a scene loads those it names in "plugins"). --resume continues the run
 // recorded in DIR/manifest.json (same scene and overrides) from its last checkpoint. `modes` writes the
 // N (default 6) eigenfrequencies nearest to HZ (default 0: the lowest) and their shapes into
-// DIR/<scene>/modes/ (models/scene/scene_modes.hpp).
+// DIR/<scene>/modes/ (models/scene/scene_modes.hpp); --open-circuit floats the driven electrodes (no
+// charge) instead of shorting them, into DIR/<scene>/modes_open_circuit/.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -55,7 +56,7 @@ int usage() {
   std::fprintf(stderr,
                "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]\n"
                "       piezocontact check SCENE [--set key=value ...]\n"
-               "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ]\n"
+               "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]\n"
                "       piezocontact list [--plugin LIB ...]\n"
                "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n");
   return 2;
@@ -117,6 +118,7 @@ int main(int argc, char** argv) {
   pc::SceneRunOptions options;
   options.output_directory = "results";
   pc::ModalOptions modal;
+  bool open_circuit = false;
   for (int i = 3; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -140,6 +142,7 @@ int main(int argc, char** argv) {
     else if (arg == "--resume") options.resume = true;
     else if (arg == "--count" && command == "modes") modal.modes = number<int>(arg, value());
     else if (arg == "--shift" && command == "modes") modal.shift_hz = number<double>(arg, value());
+    else if (arg == "--open-circuit" && command == "modes") open_circuit = true;
     else {
       std::fprintf(stderr, "error: unknown option '%s'\n", arg.c_str());
       return usage();
@@ -148,11 +151,13 @@ int main(int argc, char** argv) {
   try {
     const pc::Scene scene = pc::load_scene_file(scene_path, overrides);
     if (command == "modes") {
-      const std::string directory = options.output_directory + "/" + scene.name + "/modes";
-      const pc::ModalResult modes = pc::write_scene_modes(scene, directory, modal);
+      const std::string directory =
+          options.output_directory + "/" + scene.name + (open_circuit ? "/modes_open_circuit" : "/modes");
+      const pc::ModalResult modes = pc::write_scene_modes(scene, directory, modal, open_circuit);
       if (pc::processes::is_writer()) {
-        std::printf("%zu modes of '%s' (%s), nearest to %g Hz, in %d Lanczos restarts and %d solves:\n",
-                    modes.frequencies_hz.size(), scene.name.c_str(), scene.mesh_description.c_str(), modal.shift_hz,
+        std::printf("%zu modes of '%s' (%s, %s electrodes), nearest to %g Hz, in %d Lanczos restarts and %d solves:\n",
+                    modes.frequencies_hz.size(), scene.name.c_str(), scene.mesh_description.c_str(),
+                    open_circuit ? "open-circuit" : "short-circuit", modal.shift_hz,
                     modes.lanczos_iterations, modes.operator_applications);
         for (size_t k = 0; k < modes.frequencies_hz.size(); ++k)
           std::printf("  mode %zu: %.6g Hz\n", k + 1, modes.frequencies_hz[k]);

@@ -12,9 +12,10 @@
 //   K* = K_uu + C^T P^-1 C        (the electric rows' sign flipped, [[K_uu, C^T], [C, -P]] is symmetric),
 // solved without forming K*: each solve is one of the whole symmetric saddle system
 //   [[K_uu - sigma M, C^T], [C, -P]] [x; y] = [b; 0].
-// Which potential dofs are prescribed decides the electrical condition: electrodes held at a potential
-// (grounded, or driven) are short-circuited; a face with no condition carries no charge (D.n = 0). Open
-// electrodes (floating, one unknown potential) are not supported yet, nor a distributed (MPI) model.
+// The potential's conditions decide the electrical one: electrodes held at a potential (grounded, or
+// driven) are short-circuited; a floating electrode (one unknown potential, UniformValueBrick) is an open
+// circuit, its net charge zero; a face with no condition carries no charge (D.n = 0). A distributed (MPI)
+// model is not supported.
 #include <string>
 #include <vector>
 

@@ -266,6 +266,14 @@ void Model::check_brick(const Brick& brick) const {
       require(c >= 0 && c < space(d.unknown).num_components(), who, ": component ", c, " of '", d.unknown,
               "' does not exist");
   }
+  for (const UniformValueCondition& d : brick.uniform_value_conditions()) {
+    require(has_field(d.unknown) && field_kind(d.unknown) == FieldKind::Unknown, who, ": uniform value of '",
+            d.unknown, "', which is not an unknown");
+    require(mesh_->has_region(d.region), who, ": unknown region '", d.region, "' (the mesh has: ",
+            join(mesh_->region_names()), ")");
+    require(d.component >= 0 && d.component < space(d.unknown).num_components(), who, ": component ", d.component,
+            " of '", d.unknown, "' does not exist");
+  }
 }
 
 int Model::add_brick(std::shared_ptr<Brick> brick) {
@@ -362,8 +370,43 @@ void Model::finalize() {
     std::sort(dofs.begin(), dofs.end());
     dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
   }
+  collect_uniform_values();
   finalized_ = true;
   apply_dirichlet();
+}
+
+void Model::collect_uniform_values() {
+  // Regions of one value that share a dof are one group (two electrodes touching at a corner are one
+  // conductor): the groups are merged by union-find over the dofs.
+  for (const auto& brick : bricks_)
+    for (const UniformValueCondition& d : brick->uniform_value_conditions()) {
+      const FESpace& s = space(d.unknown);
+      const std::vector<int>& constrained = constrained_[d.unknown];
+      std::vector<int> dofs;
+      for (int scalar : s.scalar_dofs_on(d.region)) {
+        const int dof = s.dof(scalar, d.component);
+        require(!std::binary_search(constrained.begin(), constrained.end(), dof), "brick '", brick->name(),
+                "': region '", d.region, "' shares dofs of '", d.unknown,
+                "' with a Dirichlet condition (a uniform value cannot be prescribed too)");
+        dofs.push_back(dof);
+      }
+      tied_[d.unknown].push_back(std::move(dofs));
+    }
+  for (auto& [name, groups] : tied_) {
+    std::map<int, int> parent;
+    const auto root = [&](int d) {
+      while (parent.at(d) != d) d = parent[d] = parent.at(parent.at(d));
+      return d;
+    };
+    for (const std::vector<int>& group : groups)
+      for (int d : group) parent.emplace(d, d);
+    for (const std::vector<int>& group : groups)
+      for (int d : group) parent[root(d)] = root(group.front());
+    std::map<int, std::vector<int>> merged;
+    for (const auto& [d, p] : parent) merged[root(d)].push_back(d);
+    groups.clear();
+    for (auto& [r, group] : merged) groups.push_back(std::move(group));
+  }
 }
 
 void Model::apply_dirichlet() {
@@ -382,6 +425,12 @@ void Model::apply_dirichlet() {
         f.values[s.dof(scalar, c)] = value[c];
       }
     }
+  }
+  for (const auto& [name, groups] : tied_) {
+    Field& f = field(name);
+    f.version = ++clock_;
+    for (const std::vector<int>& group : groups)
+      for (int d : group) f.values[d] = f.values[group.front()];
   }
 }
 
@@ -407,7 +456,8 @@ Model::System& Model::system() {
     } else if (constrained_.count(u)) {
       constrained = constrained_.at(u);
     }
-    s.layout.add_field(u, space(u).num_dofs(), constrained);
+    const bool tied = !std::count(frozen_.begin(), frozen_.end(), u) && tied_.count(u);
+    s.layout.add_field(u, space(u).num_dofs(), constrained, tied ? tied_.at(u) : std::vector<std::vector<int>>{});
   }
   s.matrix = std::make_unique<SystemMatrix>(s.layout);
   s.handles.resize(bricks_.size());
@@ -754,7 +804,7 @@ std::vector<double> Model::round_off_scales() const { return in_layout_order(lay
 Eigen::VectorXd Model::free_values() const {
   const DofLayout& l = layout();
   Eigen::VectorXd x = Eigen::VectorXd::Zero(l.size());
-  for (const std::string& u : unknown_names_) l.add_to_global(l.field_index(u), field(u).values, x);
+  for (const std::string& u : unknown_names_) l.copy_to_global(l.field_index(u), field(u).values, x);
   return x;
 }
 

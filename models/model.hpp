@@ -90,7 +90,8 @@ class Model : public DataView, public NonlinearProblem {
   // ---- time -------------------------------------------------------------------------------------
   double time() const { return time_; }
   void set_time(double t) { time_ = t; }
-  // Writes the Dirichlet values at the current time into the unknowns' constrained dofs.
+  // Writes the Dirichlet values at the current time into the unknowns' constrained dofs, and gives the
+  // dofs of each uniform-value region their group's value (that of its first dof).
   void apply_dirichlet();
 
   // ---- the system -------------------------------------------------------------------------------
@@ -161,6 +162,7 @@ class Model : public DataView, public NonlinearProblem {
   Field& field(const std::string& name);
   const Field& field(const std::string& name) const;
   void check_brick(const Brick& brick) const;
+  void collect_uniform_values();  // the uniform-value regions' dofs, merged into disjoint groups
   void bind_brick(int index);
   System& system();
   void refresh_brick(int index);
@@ -176,6 +178,7 @@ class Model : public DataView, public NonlinearProblem {
   std::vector<std::unique_ptr<BrickState>> brick_states_;
   std::map<std::string, std::vector<int>> constrained_;  // per unknown: Dirichlet dofs
   std::vector<DirichletCondition> dirichlet_;
+  std::map<std::string, std::vector<std::vector<int>>> tied_;  // per unknown: groups of one value
   std::vector<std::string> frozen_;
   std::vector<char> owned_cells_;
   std::map<std::vector<std::string>, std::unique_ptr<System>> systems_;

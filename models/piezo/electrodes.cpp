@@ -4,17 +4,46 @@
 
 #include "assembly/error.hpp"
 #include "bricks/dirichlet_brick.hpp"
+#include "bricks/source_bricks.hpp"
+#include "bricks/uniform_value_brick.hpp"
 
 namespace pc {
+
+Electrode floating_electrode(std::string name, std::string region, TimeFunction charge) {
+  Electrode e;
+  e.name = std::move(name);
+  e.region = std::move(region);
+  e.circuit = ElectrodeCircuit::Floating;
+  e.charge = std::move(charge);
+  return e;
+}
 
 void add_electrode(Model& model, const Electrode& electrode, const std::string& potential) {
   require(!electrode.name.empty(), "electrode on region '", electrode.region, "': it needs a name");
   require(model.mesh().has_region(electrode.region) && model.mesh().region_kind(electrode.region) == RegionKind::Faces,
           "electrode '", electrode.name, "': '", electrode.region, "' is not a face region of the mesh");
-  const TimeFunction voltage = electrode.voltage;
-  model.add_brick(std::make_shared<DirichletBrick>(
-      potential, electrode.region, std::vector<int>{},
-      [voltage](const double*, double t, double* out) { out[0] = voltage.value(t); }, voltage.varies()));
+  if (electrode.circuit == ElectrodeCircuit::Driven) {
+    const TimeFunction voltage = electrode.voltage;
+    model.add_brick(std::make_shared<DirichletBrick>(
+        potential, electrode.region, std::vector<int>{},
+        [voltage](const double*, double t, double* out) { out[0] = voltage.value(t); }, voltage.varies()));
+    return;
+  }
+  model.add_brick(std::make_shared<UniformValueBrick>(potential, electrode.region));
+  const TimeFunction charge = electrode.charge;
+  if (!charge.varies() && charge.value(0) == 0) return;  // an open circuit: the summed residual is the condition
+  const double area = model.mesh().region_measure(electrode.region);
+  require(area > 0, "electrode '", electrode.name, "': region '", electrode.region, "' has no area");
+  // Q = -integral D . n over the electrode, and the surface charge brick's q_b is D . n.
+  model.add_brick(std::make_shared<SurfaceChargeBrick>(
+      [charge, area](const double*, double t, double* out) { out[0] = -charge.value(t) / area; },
+      charge.varies() ? LoadTime::Varying : LoadTime::Constant, electrode.region, potential));
+}
+
+double electrode_potential(const Model& model, const std::string& region, const std::string& potential) {
+  const std::vector<int> dofs = model.space(potential).dofs_on(region);
+  require(!dofs.empty(), "electrode_potential: region '", region, "' has no dof of '", potential, "'");
+  return model.values(potential)[dofs.front()];
 }
 
 double electrode_charge(const Model& model, const std::string& region, const std::string& potential) {
@@ -33,8 +62,14 @@ std::vector<ElectrodeReading> ElectrodeMeter::read(const Model& model) {
   std::vector<double> charges;
   for (size_t i = 0; i < electrodes_.size(); ++i) {
     ElectrodeReading r;
-    r.voltage = electrodes_[i].voltage.value(t);
-    r.charge = electrode_charge(model, electrodes_[i].region, potential_);
+    const Electrode& e = electrodes_[i];
+    if (e.circuit == ElectrodeCircuit::Driven) {
+      r.voltage = e.voltage.value(t);
+      r.charge = electrode_charge(model, e.region, potential_);
+    } else {
+      r.voltage = electrode_potential(model, e.region, potential_);
+      r.charge = e.charge.value(t);
+    }
     if (has_previous_ && t > previous_time_) r.current = (r.charge - previous_charge_[i]) / (t - previous_time_);
     charges.push_back(r.charge);
     readings.push_back(r);

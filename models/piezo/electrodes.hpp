@@ -1,6 +1,10 @@
 #pragma once
-// Driven electrodes: phi = V(t) on a face region (a Dirichlet condition with a time function), and what
-// each reports, its charge and current.
+// Electrodes on a face region, and what each reports, its voltage, charge and current:
+// - driven: phi = V(t) (a Dirichlet condition with a time function); the charge is measured;
+// - floating: phi takes one unknown value V over the region (UniformValueBrick) and the electrode holds
+//   a given net charge Q(t), 0 for an open circuit (a sensor, an open-circuit measurement); V is measured.
+//   The charge is a uniform surface charge -Q(t) / |region| on the region (SurfaceChargeBrick): since the
+//   region's residuals are summed into one equation, only its total matters.
 //
 // The charge is the reaction of the potential condition: the electric residual summed over the
 // electrode's dofs. With R_phi(psi) = -integral D . grad psi (sources aside) and the electrode's shape
@@ -18,23 +22,37 @@
 
 namespace pc {
 
+enum class ElectrodeCircuit { Driven, Floating };
+
 struct Electrode {
   std::string name;    // of the history columns: V_<name>, Q_<name>, I_<name>
   std::string region;  // a face region of the mesh
-  TimeFunction voltage;
+  TimeFunction voltage;  // driven: the prescribed V(t)
+  ElectrodeCircuit circuit = ElectrodeCircuit::Driven;
+  TimeFunction charge = TimeFunction::constant(0);  // floating: the net charge Q(t) it holds (0: open circuit)
 };
 
-// Adds the electrode's condition phi = V(t) (a DirichletBrick on `potential`) to a model not finalized yet.
+// A floating electrode on `region` holding `charge` (default: none, an open circuit).
+Electrode floating_electrode(std::string name, std::string region, TimeFunction charge = TimeFunction::constant(0));
+
+// Adds the electrode's bricks to a model not finalized yet: driven, phi = V(t) (a DirichletBrick on
+// `potential`); floating, one value of phi over the region and, for a charge that is not identically 0, its
+// surface charge.
 void add_electrode(Model& model, const Electrode& electrode, const std::string& potential = "phi");
 
-// The charge on a face region where the potential is prescribed, from the model's last residual.
+// The potential of a floating electrode (of its region's first dof; all of them hold it).
+double electrode_potential(const Model& model, const std::string& region, const std::string& potential = "phi");
+
+// The charge on a face region where the potential is prescribed, from the model's last residual. (On a
+// floating electrode it is the residual of its one equation, 0 to Newton's tolerance: its charge is the
+// given one.)
 double electrode_charge(const Model& model, const std::string& region, const std::string& potential = "phi");
 
 struct ElectrodeReading {
   double voltage = 0, charge = 0, current = 0;
 };
 
-// Reads the electrodes after each accepted state: V(t), Q, and I = (Q - Q_previous) / (t - t_previous)
+// Reads the electrodes after each accepted state: V and Q (one given, the other measured), and I = (Q - Q_previous) / (t - t_previous)
 // (0 at the first reading). Its previous readings can be saved and restored so a resumed run continues
 // the current exactly.
 class ElectrodeMeter {

@@ -11,6 +11,7 @@
 #include "bricks/permittivity_brick.hpp"
 #include "bricks/piezoelectric_brick.hpp"
 #include "bricks/source_bricks.hpp"
+#include "bricks/uniform_value_brick.hpp"
 #include "bricks/viscosity_brick.hpp"
 
 namespace pc {
@@ -49,7 +50,7 @@ EnergyBooks::EnergyBooks(PiezoContactModel& built, double initial_kinetic)
     else if (dynamic_cast<const ViscosityBrick*>(brick) || dynamic_cast<const BoundaryDashpotBrick*>(brick))
       kind = Kind::Dissipative;
     else if (dynamic_cast<const SourceBrick*>(brick)) kind = Kind::External;
-    else if (dynamic_cast<const DirichletBrick*>(brick)) kind = Kind::None;
+    else if (dynamic_cast<const DirichletBrick*>(brick) || dynamic_cast<const UniformValueBrick*>(brick)) kind = Kind::None;
     kinds_.push_back(kind);
     all.push_back(b);
   }

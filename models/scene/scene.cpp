@@ -430,16 +430,29 @@ Scene load_scene(const Json& json, const std::string& directory) {
     }
   });
 
-  // Driven electrodes: phi = V(t) on face regions, each reporting its charge and current.
+  // Electrodes on face regions: driven (phi = V(t)), reporting their charge and current, or floating (one
+  // unknown potential, a given charge), reporting their voltage.
   if (const auto electrodes = json.find("electrodes")) {
     problems.check_void([&] {
       require(electric, "scene: 'electrodes': a purely mechanical body (no material.piezo_E) has no potential to drive");
       std::vector<std::string> names;
       for (const Json& item : electrodes->as_array()) {
         problems.check_void([&] {
-          require_known_keys(item, {"name", "region", "voltage"});
-          Electrode electrode{item.at("name").as_string(), item.at("region").as_string(),
-                              time_function_from_json(item.at("voltage"))};
+          require_known_keys(item, {"name", "region", "voltage", "floating", "charge"});
+          const bool floating = item.find("floating") && item.at("floating").as_bool();
+          Electrode electrode;
+          if (floating) {
+            require(!item.find("voltage"), "scene: '", item.path(), "': a floating electrode's voltage is computed; "
+                    "give its 'charge' (default 0, an open circuit) instead of a 'voltage'");
+            electrode = floating_electrode(item.at("name").as_string(), item.at("region").as_string(),
+                                           item.find("charge") ? time_function_from_json(item.at("charge"))
+                                                               : TimeFunction::constant(0));
+          } else {
+            require(!item.find("charge"), "scene: '", item.path(), "': a driven electrode's charge is measured; "
+                    "'charge' is for a floating one (\"floating\": true)");
+            electrode = Electrode{item.at("name").as_string(), item.at("region").as_string(),
+                                  time_function_from_json(item.at("voltage"))};
+          }
           require_file_name(item.at("name"), electrode.name);
           require(std::find(names.begin(), names.end(), electrode.name) == names.end(), "scene: '", item.path(),
                   ".name': electrode '", electrode.name, "' is named twice");

@@ -7,14 +7,21 @@
 #include "assembly/processes.hpp"
 #include "assembly/vtu_writer.hpp"
 #include "models/output/csv_log.hpp"
+#include "models/piezo/electrodes.hpp"
 #include "models/scene/scene_runner.hpp"
 
 namespace pc {
 
-ModalResult write_scene_modes(const Scene& scene, const std::string& directory, const ModalOptions& options) {
+ModalResult write_scene_modes(const Scene& scene, const std::string& directory, const ModalOptions& options,
+                              bool open_circuit) {
   require(scene.spec.rho > 0, "modes: the scene's body has no mass (material.rho = 0): a quasi-static model has no "
           "vibration modes");
-  FoundationRun run(scene, scene.foundations.front());
+  Scene circuit = scene;
+  if (open_circuit) {
+    require(!scene.spec.electrodes.empty(), "modes: --open-circuit, but the scene has no electrodes to open");
+    for (Electrode& e : circuit.spec.electrodes) e = floating_electrode(e.name, e.region);
+  }
+  FoundationRun run(circuit, circuit.foundations.front());
   Model& model = run.model();
   const ModalResult modes = modal_analysis(model, options);
   if (directory.empty() || !processes::is_writer()) return modes;

@@ -62,6 +62,22 @@ TEST(DeviceSceneKeys, BadElectrodesAreRefusedNamingThePath) {
                           {"electrodes[0]", "volts"});
 }
 
+TEST(DeviceSceneKeys, FloatingElectrodesAreReadAndAVoltageOrAChargeInTheWrongPlaceRefused) {
+  const Scene scene = coarse({R"(electrodes=[{"name": "sense", "region": "left", "floating": true},
+                                             {"name": "store", "region": "right", "floating": true, "charge": {"type": "ramp", "value": 1e-9, "duration": 1}}])"});
+  ASSERT_EQ(scene.spec.electrodes.size(), 2u);
+  EXPECT_EQ(scene.spec.electrodes[0].circuit, ElectrodeCircuit::Floating);
+  EXPECT_EQ(scene.spec.electrodes[0].charge.value(0.5), 0.0);
+  EXPECT_NEAR(scene.spec.electrodes[1].charge.value(0.5), 0.5e-9, 1e-24);
+  expect_error_containing(
+      [] { coarse({R"(electrodes=[{"name": "a", "region": "right", "floating": true, "voltage": 1}])"}); },
+      {"'electrodes[0]'", "floating electrode's voltage is computed"});
+  expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": 1, "charge": 1}])"}); },
+                          {"'electrodes[0]'", "'charge' is for a floating one"});
+  expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "right", "floating": 1}])"}); },
+                          {"electrodes[0].floating"});
+}
+
 TEST(DeviceSceneKeys, BadFoundationVelocityIsRefusedNamingThePath) {
   expect_error_containing([] { coarse({"contact.foundation_velocity=[0.1]"}); },
                           {"'contact.foundation_velocity' must list 2 time functions", "got 1"});
@@ -109,6 +125,28 @@ TEST_F(DeviceSceneRun, HistoryHoldsEachElectrodesVoltageChargeAndCurrentAcrossAR
   for (size_t n = 0; n < whole.rows.size(); ++n)
     for (size_t c = 0; c < whole.columns.size(); ++c)
       EXPECT_EQ(resumed.rows[n][c], whole.rows[n][c]) << whole.columns[c] << " at row " << n;
+}
+
+// A floating electrode's columns: Q is the given charge, V the potential the run computes; the energy
+// books still balance (the charge enters as a source on the electrode). One touching a grounded region
+// is refused naming both.
+TEST_F(DeviceSceneRun, FloatingElectrodeReportsItsComputedVoltageAndGivenCharge) {
+  // On the contact face: it shares no dof with the grounded top (left and right would, at the corners).
+  const Scene scene = coarse({R"(electrodes=[{"name": "sense", "region": "bottom", "floating": true, "charge": {"type": "ramp", "value": 1e-9, "duration": 0.1}}])"});
+  ASSERT_TRUE(run_foundation(scene, find_foundation(scene, "insulated"), directory_.string(), false).completed);
+  const testing::Table history = testing::read_csv(directory_ / "history.csv");
+  const int v = history.column("V_sense"), q = history.column("Q_sense"), balance = history.column("E_balance");
+  const int work = history.column("W_external");
+  double previous_v = 0;
+  for (const auto& row : history.rows) {
+    EXPECT_NEAR(row[q], 1e-9 * std::min(row[0] / 0.1, 1.0), 1e-21);
+    EXPECT_NE(row[v], previous_v) << "the floating potential follows its charge";
+    previous_v = row[v];
+    EXPECT_LT(std::abs(row[balance]), 1e-8 * std::abs(row[work]) + 1e-300) << "at t = " << row[0];
+  }
+  const Scene corner = coarse({R"(electrodes=[{"name": "sense", "region": "left", "floating": true}])"});
+  expect_error_containing([&] { FoundationRun run(corner, find_foundation(corner, "insulated")); },
+                          {"region 'left' shares dofs of 'phi' with a Dirichlet condition"});
 }
 
 // contact_state in the VTU files: 0 where the node is not pressed, else 1 (sticking) or 2 (slipping); the
