@@ -51,6 +51,16 @@ struct UniformValueCondition {
   int component = 0;
 };
 
+// An unknown a brick brings with it, e.g. a contact multiplier: a field in the space of the field `like`,
+// living on `region` only (its dofs off the region are eliminated at 0, so the system grows by the
+// region's dofs). The model adds it when the brick is added. Its residual must be in the units of
+// like's (a force, for a multiplier of v): Newton measures it at least by that block's scale.
+struct BrickUnknown {
+  std::string name;
+  std::string like;
+  std::string region;
+};
+
 class Brick {
  public:
   virtual ~Brick() = default;
@@ -66,6 +76,8 @@ class Brick {
   virtual std::vector<BrickTerm> terms() const = 0;
   // Conditions eliminated from the system (Dirichlet bricks); most bricks have none.
   virtual std::vector<DirichletCondition> dirichlet_conditions() const { return {}; }
+  // Unknowns the brick brings (multipliers); most bricks have none.
+  virtual std::vector<BrickUnknown> own_unknowns() const { return {}; }
   // Regions where an unknown takes one value (UniformValueBrick); most bricks have none.
   virtual std::vector<UniformValueCondition> uniform_value_conditions() const { return {}; }
 

@@ -280,6 +280,17 @@ int Model::add_brick(std::shared_ptr<Brick> brick) {
   require(brick != nullptr, "Model: add_brick(nullptr)");
   require(!finalized_, "Model: add_brick('", brick->name(), "') after finalize()");
   brick->update(*this);
+  for (const BrickUnknown& own : brick->own_unknowns()) {
+    require(has_field(own.like), "brick '", brick->name(), "': its unknown '", own.name, "' takes the space of '",
+            own.like, "', which the model does not have");
+    require(mesh_->has_region(own.region), "brick '", brick->name(), "': its unknown '", own.name,
+            "' lives on region '", own.region, "', which the mesh does not have (it has: ", join(mesh_->region_names()),
+            ")");
+    require(!has_field(own.name), "brick '", brick->name(), "' brings the unknown '", own.name,
+            "', but the model has a field of that name already (one such brick per model)");
+    add_unknown(own.name, space_ptr(own.like));
+    restricted_[own.name] = own;
+  }
   check_brick(*brick);
   bricks_.push_back(std::move(brick));
   brick_states_.push_back(std::make_unique<BrickState>());
@@ -366,6 +377,15 @@ void Model::finalize() {
             dofs.push_back(s.dof(scalar, c));
       dirichlet_.push_back(d);
     }
+  // A brick's own unknown lives on its region: the dofs off it are eliminated, at 0.
+  for (const auto& [name, own] : restricted_) {
+    const FESpace& s = space(name);
+    std::vector<char> on(s.num_dofs(), 0);
+    for (int d : s.dofs_on(own.region)) on[d] = 1;
+    std::vector<int>& dofs = constrained_[name];
+    for (int d = 0; d < s.num_dofs(); ++d)
+      if (!on[d]) dofs.push_back(d);
+  }
   for (auto& [name, dofs] : constrained_) {
     std::sort(dofs.begin(), dofs.end());
     dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
@@ -783,6 +803,11 @@ void Model::assemble(bool tangent) {
     jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
+  // A brick's own unknown (a multiplier) starts balanced at zero with no force in it, which would leave
+  // Newton no scale to measure it by: its residual is in the units of its `like` field's, and takes that
+  // block's scale when its own is smaller.
+  for (const auto& [name, own] : restricted_)
+    residual_scales_[name] = std::max(residual_scales_[name], residual_scales_[own.like]);
   residual_ = Eigen::VectorXd::Zero(s.layout.size());
   for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
 }

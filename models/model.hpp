@@ -179,6 +179,7 @@ class Model : public DataView, public NonlinearProblem {
   std::map<std::string, std::vector<int>> constrained_;  // per unknown: Dirichlet dofs
   std::vector<DirichletCondition> dirichlet_;
   std::map<std::string, std::vector<std::vector<int>>> tied_;  // per unknown: groups of one value
+  std::map<std::string, BrickUnknown> restricted_;  // bricks' own unknowns, by name
   std::vector<std::string> frozen_;
   std::vector<char> owned_cells_;
   std::map<std::vector<std::string>, std::unique_ptr<System>> systems_;

@@ -20,6 +20,7 @@
 #include "assembly/parameters.hpp"
 #include "assembly/registry.hpp"
 #include "assembly/term_assembly.hpp"
+#include "bricks/alart_curnier_friction_brick.hpp"
 #include "bricks/conductive_foundation_brick.hpp"
 #include "bricks/contact_status.hpp"
 #include "bricks/friction_brick.hpp"
@@ -690,7 +691,7 @@ void expect_declares_like_the_law(const Registry<Factory>& registry, const std::
 
 TEST(LawRegistries, HoldTheBuiltInLaws) {
   expect_registered(normal_law_registry(), {"linear_damped", "power_damped", "normal_compliance"});
-  expect_registered(friction_law_registry(), {"none", "viscous", "coulomb", "tresca"});
+  expect_registered(friction_law_registry(), {"none", "viscous", "coulomb", "tresca", "coulomb_exact"});
   expect_registered(foundation_law_registry(), {"insulated", "conductive", "pressure_activated"});
   expect_declares_like_the_law<LinearDampedResponse>(normal_law_registry(), "linear_damped");
   expect_declares_like_the_law<PowerDampedResponse>(normal_law_registry(), "power_damped");
@@ -698,6 +699,7 @@ TEST(LawRegistries, HoldTheBuiltInLaws) {
   expect_declares_like_the_law<ViscousFriction>(friction_law_registry(), "viscous");
   expect_declares_like_the_law<RegularizedCoulomb>(friction_law_registry(), "coulomb");
   expect_declares_like_the_law<RegularizedTresca>(friction_law_registry(), "tresca");
+  expect_declares_like_the_law<AugmentedCoulomb>(friction_law_registry(), "coulomb_exact");
   expect_declares_like_the_law<LinearConductance>(foundation_law_registry(), "conductive");
   expect_declares_like_the_law<PressureActivatedConductance>(foundation_law_registry(), "pressure_activated");
   EXPECT_TRUE(friction_law_registry().find("none")->parameters.empty());

@@ -44,7 +44,7 @@ TEST(Registry, EveryNameAScenesGivesIsRegistered) {
   const std::string list = catalog_list(registry_catalog());
   for (const char* line : {"piezoelectric materials (material.preset): BaTiO3 PZT-4 PZT-5A PZT-5H",
                            "normal laws (contact.law_normal): linear_damped normal_compliance power_damped",
-                           "friction laws (contact.law_tangential): coulomb none tresca viscous",
+                           "friction laws (contact.law_tangential): coulomb coulomb_exact none tresca viscous",
                            "foundation laws (foundation.<name>.type): conductive insulated pressure_activated",
                            "bricks (bricks[].type): boundary_dashpot",
                            "time schemes (time.scheme): backward_euler bdf2 theta",
@@ -64,7 +64,7 @@ TEST(Registry, CheckRefusesWhatRunWouldRefuseWithTheKeyAndTheValue) {
       {{"contact.law_normal=linaer_damped"},
        "'contact.law_normal': unknown normal law 'linaer_damped' (known: linear_damped, normal_compliance, "
        "power_damped)"},
-      {{"contact.law_tangential=banana"}, "unknown friction law 'banana' (known: coulomb, none, tresca, viscous)"},
+      {{"contact.law_tangential=banana"}, "unknown friction law 'banana' (known: coulomb, coulomb_exact, none, tresca, viscous)"},
       {{"foundation.conductive.type=superconductive"}, "unknown foundation law 'superconductive'"},
       {{"solver.condensation=diagonal"}, "'solver.condensation': unknown condensation 'diagonal' (known: auto, columns, krylov, schur)"},
       {{"solver.linear=superlu"}, "'solver.linear': unknown linear solver 'superlu'"},
@@ -73,7 +73,7 @@ TEST(Registry, CheckRefusesWhatRunWouldRefuseWithTheKeyAndTheValue) {
       {{"contact.law_tangential=coulomb", "contact.mu=0.3"},
        "'contact.c_tau' is read by law_tangential viscous, not by the chosen law_normal 'linear_damped' and "
        "law_tangential 'coulomb'"},
-      {{"contact.mu=0.3"}, "'contact.mu' is read by law_tangential coulomb, not by the chosen"},
+      {{"contact.mu=0.3"}, "'contact.mu' is read by law_tangential coulomb, law_tangential coulomb_exact, not by the chosen"},
       {{"foundation.conductive.p_ref=1e3"}, "'foundation.conductive.p_ref' is read by foundation type pressure_activated"},
       {{"contact.typo=1"}, "unknown key 'contact.typo'"},
       {{"foundation.conductive.type=pressure_activated"},
