@@ -4,8 +4,10 @@
 // relative to the foundation) is the Alart-Curnier fixed point
 //   lambda = P_B(lambda_tau + r s),  B the disk of radius g = mu |p_nu|,  P_B the projection onto it,
 // which holds exactly when the node sticks (s = 0, |lambda| <= g) or slips (lambda = g s / |s|): no
-// eps, no creep under a load below the threshold. r > 0 (Pa s/m) scales the slip against the stress; the
-// solution does not depend on it, Newton's path does. g / r is the width of the "stick band" in slip
+// eps, no creep under a load below the threshold. r > 0 (Pa s/m) scales the slip against the stress. The
+// pointwise law does not depend on it; this integral (Galerkin) form of it does, weakly, where stick and
+// slip share an element (on the motor: 0.7 % of the thrust over a decade of r); Newton's path depends on
+// it strongly. g / r is the width of the "stick band" in slip
 // speed that Newton's linearisation sees: wider than the slip speeds of a sticking contact and Newton
 // stays on the stick branch (fast); much narrower and it hops between the two slip branches (a 2D slip
 // branch has no tangent in the slip). Choose r = mu p / v with v of the order of the contact's speeds.
@@ -44,7 +46,7 @@ struct AugmentedCoulomb {
                       Range::at_least(0), Required::yes),
         law_parameter("r", &AugmentedCoulomb::r, "Pa s/m",
                       "augmentation: slip speed to stress; mu p / r of the order of the contact's speeds (Newton's "
-                      "path depends on it, the solution does not)",
+                      "path depends on it, the solution barely)",
                       Range::positive(), Required::yes)};
   }
 

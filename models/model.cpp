@@ -377,11 +377,15 @@ void Model::finalize() {
             dofs.push_back(s.dof(scalar, c));
       dirichlet_.push_back(d);
     }
-  // A brick's own unknown lives on its region: the dofs off it are eliminated, at 0.
+  // A brick's own unknown lives on its region: the dofs off it are eliminated, at 0, and so are those
+  // where its `like` field is prescribed (a multiplier of a clamped dof has nothing to act on: its force
+  // is the clamp's reaction, and its column would be empty).
   for (const auto& [name, own] : restricted_) {
     const FESpace& s = space(name);
     std::vector<char> on(s.num_dofs(), 0);
     for (int d : s.dofs_on(own.region)) on[d] = 1;
+    if (constrained_.count(own.like))
+      for (int d : constrained_.at(own.like)) on[d] = 0;
     std::vector<int>& dofs = constrained_[name];
     for (int d = 0; d < s.num_dofs(); ++d)
       if (!on[d]) dofs.push_back(d);

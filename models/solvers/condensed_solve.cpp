@@ -1,6 +1,7 @@
 #include "models/solvers/condensed_solve.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "assembly/error.hpp"
 
@@ -75,8 +76,13 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
     const Eigen::MatrixXd& S = schur_->schur();
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(S);
     const double smallest = lu.rcond() * S.cwiseAbs().colwise().sum().maxCoeff();
-    schur_regular_ = smallest > kMinSchurRelativeSize * largest_entry_in_rows(A, nonlinear_);
-    if (schur_regular_) schur_inverse_ = lu.inverse();
+    // Rows of S that vanish (a multiplier's, which only the nonlinear part fills) make it singular; the
+    // condition estimate is not always finite then, nor is the inverse: check both.
+    schur_regular_ = std::isfinite(smallest) && smallest > kMinSchurRelativeSize * largest_entry_in_rows(A, nonlinear_);
+    if (schur_regular_) {
+      schur_inverse_ = lu.inverse();
+      schur_regular_ = schur_inverse_.allFinite();
+    }
     woodbury_valid_ = false;
     cost.condensation_seconds += seconds_since(t);
   } else {
@@ -169,6 +175,7 @@ Eigen::VectorXd CondensedSolve::schur_step(const NonlinearPart& D, const Eigen::
   cost.condensation_seconds += seconds_since(t);
   t = Clock::now();
   Eigen::VectorXd dx = schur_->expand(b, x_c);
+
   cost.solve_seconds += seconds_since(t);
   return dx;
 }

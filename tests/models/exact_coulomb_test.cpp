@@ -9,7 +9,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <memory>
+#include <string>
 
 #include "assembly/mesh_generators.hpp"
 #include "bricks/alart_curnier_friction_brick.hpp"
@@ -20,6 +24,11 @@
 #include "bricks/voigt.hpp"
 #include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
+#include "models/scene/json.hpp"
+#include "models/scene/scene.hpp"
+#include "models/scene/scene_runner.hpp"
+#include "models/solvers/newton.hpp"
+#include "models/stepper.hpp"
 #include "support/run_model.hpp"
 
 namespace pc {
@@ -147,6 +156,63 @@ TEST(ExactCoulomb, BlockPushedBelowTheThresholdComesToRestWhereTheRegularisedLaw
   EXPECT_LT(exact.back(), 1e-4 * regularised.back());
   EXPECT_NEAR(exact_force, -push_force, 1e-6 * push_force) << "the friction holds the push";
   EXPECT_NEAR(regularised_force, -push_force, 1e-5 * push_force);
+}
+
+// The multiplier's rows are empty in the linear part A, so the Schur complement S_c of the condensed
+// paths is singular there: each path must still give the full factorisation's steps. A pushed block at
+// rest, then sliding on a foundation that starts to move, solved four ways.
+TEST(ExactCoulomb, CondensedPathsAgreeWithTheFullSolveThoughTheMultiplierIsNotInTheLinearPart) {
+  std::map<std::string, Eigen::VectorXd> lambda, v;
+  for (const char* path : {"full", "schur", "columns", "krylov"}) {
+    PiezoContactSpec spec = block({"coulomb_exact", {{"mu", kMu}, {"r", 1e5}}});
+    spec.order = 2;
+    spec.rho = 2000;
+    spec.tractions = {{"top", [](const double*, double, double* out) { out[0] = 500, out[1] = -1e5; },
+                       LoadTime::Constant}};
+    auto motion = std::make_shared<FoundationMotion>();
+    motion->velocity[0] = TimeFunction::table({{0, 0}, {4e-3, 0}, {6e-3, 0.02}});
+    spec.foundation_motion = motion;
+    PiezoContactModel built = build_piezo_contact_model(spec);
+    NewtonOptions options;
+    if (std::string(path) == "full") options.condensed_max_dofs = 0;
+    else options.condensation = path;
+    StepperOptions steps;
+    steps.end = 1e-2;
+    steps.step = 2.5e-3;
+    NewtonSolver newton(options);
+    const RunSummary summary = Stepper(steps).run(*built.model, *built.scheme, newton, {});
+    ASSERT_TRUE(summary.completed) << path << ": " << summary.message;
+    lambda[path] = built.model->values("lambda_tau");
+    v[path] = built.model->values("v");
+  }
+  for (const char* path : {"schur", "columns", "krylov"}) {
+    EXPECT_LT((lambda[path] - lambda["full"]).norm(), 1e-8 * lambda["full"].norm()) << path;
+    EXPECT_LT((v[path] - v["full"]).norm(), 1e-8 * v["full"].norm()) << path;
+  }
+  EXPECT_GT(lambda["full"].norm(), 0);
+}
+
+// The motor scene with the exact law, its first steps through the Schur condensation ("auto" picks it): P2,
+// an electric body, clamped ends at the contact's corners. Its S_c, singular in the multiplier's rows, once
+// passed the condition estimate and gave a NaN step.
+TEST(ExactCoulomb, MotorSceneRunsItsFirstStepsThroughTheSchurCondensation) {
+  std::ifstream file(std::string(PIEZOCONTACT_SCENES) + "/motor2d.json");
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("\"law_tangential\": \"coulomb\"", "\"law_tangential\": \"coulomb_exact\"");
+  replace("\"eps\": 0.002", "\"r\": 3e6");
+  replace("\"time\": {\"T\": 6e-4, \"steps\": 1200}", "\"time\": {\"T\": 6e-6, \"steps\": 12}");
+  const Scene scene = load_scene(parse_json(text, "motor2d (exact)"), PIEZOCONTACT_SCENES);
+  FoundationRun run(scene, scene.foundations.front());
+  const FoundationRunResult result = run.run("", false);
+  ASSERT_TRUE(result.completed) << result.message;
+  EXPECT_EQ(result.cutbacks, 0);
+  EXPECT_NE(result.linear_strategy.find(": schur"), std::string::npos) << result.linear_strategy;
+  EXPECT_TRUE(run.model().values("lambda_tau").allFinite());
 }
 
 }  // namespace
