@@ -5,12 +5,12 @@
 //  2. a block held on a foundation sliding under it feels exactly mu p, whatever the augmentation r
 //     (the regularised law gives mu p V / sqrt(V^2 + eps^2), exact only as eps -> 0);
 //  3. a block pushed along below the threshold comes to rest: its contact nodes' slip dies out step by
-//     step and the friction carries the push; the regularised law creeps on at a speed of order eps.
+//     step and the friction carries the push; the regularised law creeps on at a speed of order eps;
+//  4. the condensed paths (Schur, columns, Krylov) give the full solve's steps. (The motor scene with the
+//     exact law: tests/scene/motor_scene_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <memory>
 #include <string>
@@ -24,9 +24,6 @@
 #include "bricks/voigt.hpp"
 #include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
-#include "models/scene/json.hpp"
-#include "models/scene/scene.hpp"
-#include "models/scene/scene_runner.hpp"
 #include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
 #include "support/run_model.hpp"
@@ -190,29 +187,6 @@ TEST(ExactCoulomb, CondensedPathsAgreeWithTheFullSolveThoughTheMultiplierIsNotIn
     EXPECT_LT((v[path] - v["full"]).norm(), 1e-8 * v["full"].norm()) << path;
   }
   EXPECT_GT(lambda["full"].norm(), 0);
-}
-
-// The motor scene with the exact law, its first steps through the Schur condensation ("auto" picks it): P2,
-// an electric body, clamped ends at the contact's corners. Its S_c, singular in the multiplier's rows, once
-// passed the condition estimate and gave a NaN step.
-TEST(ExactCoulomb, MotorSceneRunsItsFirstStepsThroughTheSchurCondensation) {
-  std::ifstream file(std::string(PIEZOCONTACT_SCENES) + "/motor2d.json");
-  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  };
-  replace("\"law_tangential\": \"coulomb\"", "\"law_tangential\": \"coulomb_exact\"");
-  replace("\"eps\": 0.002", "\"r\": 3e6");
-  replace("\"time\": {\"T\": 6e-4, \"steps\": 1200}", "\"time\": {\"T\": 6e-6, \"steps\": 12}");
-  const Scene scene = load_scene(parse_json(text, "motor2d (exact)"), PIEZOCONTACT_SCENES);
-  FoundationRun run(scene, scene.foundations.front());
-  const FoundationRunResult result = run.run("", false);
-  ASSERT_TRUE(result.completed) << result.message;
-  EXPECT_EQ(result.cutbacks, 0);
-  EXPECT_NE(result.linear_strategy.find(": schur"), std::string::npos) << result.linear_strategy;
-  EXPECT_TRUE(run.model().values("lambda_tau").allFinite());
 }
 
 }  // namespace
