@@ -18,6 +18,7 @@
 #include "models/piezo/energy_books.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
 #include "support/clamped_capacitor.hpp"
+#include "support/piezo_circuit.hpp"
 #include "support/run_model.hpp"
 
 namespace pc {
@@ -61,12 +62,8 @@ struct CompressedBar {
     const PiezoTensors t = material.tensors(3, Axis::z);
     PiezoContactSpec spec;
     spec.mesh = std::make_shared<const Mesh>(box_mesh({0, 0, 0}, {side, side, height}, 2, 2, 2, Shape::Tetrahedron));
-    spec.B = t.B;
-    spec.E = t.E;
-    spec.beta = t.beta;
-    spec.grounded = {"zmin"};
-    if (open_circuit) spec.electrodes = {floating_electrode("sense", "zmax")};
-    else spec.grounded.push_back("zmax");
+    testing::set_piezo_tensors(spec, t, false);
+    testing::set_circuit(spec, "zmin", "zmax", open_circuit);
     spec.tractions = {{"zmax", [](const double*, double, double* out) { out[0] = out[1] = 0, out[2] = -pressure; },
                        LoadTime::Constant}};
     spec.extra_bricks = [](Model& m) {

@@ -25,6 +25,7 @@
 #include "models/modal_analysis.hpp"
 #include "models/piezo/electrodes.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
+#include "support/piezo_circuit.hpp"
 
 namespace pc {
 namespace {
@@ -137,13 +138,8 @@ struct PiezoRod {
     PiezoContactSpec spec;
     spec.mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {length, height}, cells, 1));
     spec.order = 2;
-    spec.rho = t.rho;
-    spec.B = t.B;
-    spec.E = t.E;
-    spec.beta = t.beta;
-    spec.grounded = {"left"};
-    if (open_circuit) spec.electrodes = {floating_electrode("free_end", "right")};
-    else spec.grounded.push_back("right");
+    testing::set_piezo_tensors(spec, t, true);
+    testing::set_circuit(spec, "left", "right", open_circuit);
     spec.extra_bricks = [](Model& m) {
       m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", "left", {0})));
       for (const char* side : {"top", "bottom"})
