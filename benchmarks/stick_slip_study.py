@@ -49,6 +49,14 @@ def measure(directory, window, threshold, overrides, scene=SCENE):
             summary["newton_iterations_total"] / summary["steps"], summary["wall_s_total"])
 
 
+def is_number(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
+
+
 def exact_scene(scene, r, directory):
     """The motor scene with coulomb_exact at augmentation r, next to a copy of its mesh."""
     os.makedirs(directory, exist_ok=True)
@@ -66,7 +74,7 @@ def exact_scene(scene, r, directory):
 
 def main():
     args = sys.argv[1:]
-    out = os.path.abspath(args.pop(0) if args and not args[0].startswith("--") and not args[0][0].isdigit()
+    out = os.path.abspath(args.pop(0) if args and args[0] != "--exact" and not is_number(args[0])
                           else os.path.join(ROOT, "results/stick_slip"))
     exact_at = args.index("--exact") if "--exact" in args else len(args)
     epsilons = [float(x) for x in args[:exact_at]] or [1e-2, 3e-3, 1e-3, 3e-4, 1e-4]

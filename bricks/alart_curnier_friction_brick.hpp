@@ -108,9 +108,7 @@ class AlartCurnierFrictionBrick : public PairedLawBrick<Law> {
       : Base(BoundLaw<Law>(std::move(names)), std::move(region), std::move(normal)),
         velocity_(fields.velocity), motion_(fields.motion) {
     this->require_pairing_of(name());
-    require(this->normal_->motion() == motion_.get(), "brick '", name(),
-            "': its foundation motion is not the one of the normal brick it is paired with (give both bricks the same "
-            "ContactFields::motion)");
+    this->require_motion_of_pairing(name(), motion_.get());
     std::vector<FieldUse> uses = {{kMultiplier}, {fields.velocity}};
     // Rows (lambda, v) x columns: the fixed point reads lambda, v and the pressure; the force lambda only.
     std::vector<Coupling> couplings = {{0, 0}, {0, 1}, {1, 0}};

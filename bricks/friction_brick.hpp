@@ -67,9 +67,7 @@ class FrictionBrick : public PairedLawBrick<Law> {
                 ContactFields fields)
       : Base(std::move(law), std::move(region), std::move(normal)), motion_(fields.motion) {
     this->require_pairing_of(name());
-    require(!this->normal_ || this->normal_->motion() == motion_.get(), "brick '", name(),
-            "': its foundation motion is not the one of the normal brick it is paired with (give both bricks the same "
-            "ContactFields::motion)");
+    this->require_motion_of_pairing(name(), motion_.get());
     std::vector<FieldUse> uses = {{fields.velocity}};
     std::vector<Coupling> couplings = {{0, 0}};
     int pressure_argument = 0;

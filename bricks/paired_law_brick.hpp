@@ -34,6 +34,12 @@ class PairedLawBrick : public Brick {
   void require_pairing_of(const std::string& brick) const {
     require_pairing(law_uses_normal_pressure<Law>, normal_.get(), brick, region_);
   }
+  // For a brick that reads the foundation's motion (friction): it must be its paired normal brick's.
+  void require_motion_of_pairing(const std::string& brick, const FoundationMotion* motion) const {
+    require(!normal_ || normal_->motion() == motion, "brick '", brick,
+            "': its foundation motion is not the one of the normal brick it is paired with (give both bricks the "
+            "same ContactFields::motion)");
+  }
 
   std::string region_;
   BoundLaw<Law> law_;

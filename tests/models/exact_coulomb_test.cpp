@@ -11,13 +11,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
 
+#include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "bricks/alart_curnier_friction_brick.hpp"
 #include "bricks/dirichlet_brick.hpp"
+#include "bricks/friction_brick.hpp"
+#include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/normal_laws.hpp"
 #include "bricks/normal_response_brick.hpp"
 #include "bricks/testing/brick_checker.hpp"
@@ -58,6 +62,29 @@ TEST(ExactCoulomb, TangentMatchesFiniteDifferencesStickingSlidingAndAcross) {
       EXPECT_GT(report.tangent_checks, 0);
     }
   }
+}
+
+// A friction brick (regularised or exact) paired with a normal brick of another foundation motion would
+// read the slip against one foundation and the pressure against another: refused, naming the remedy.
+TEST(ExactCoulomb, FrictionOfAnotherFoundationMotionThanItsNormalBrickIsRefused) {
+  ContactFields moving;
+  auto motion = std::make_shared<FoundationMotion>();
+  motion->velocity[0] = TimeFunction::constant(1);
+  moving.motion = motion;
+  const auto at_rest = std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom");
+  for (const auto& make : std::vector<std::function<void()>>{
+           [&] { AlartCurnierFrictionBrick<>("bottom", at_rest, moving); },
+           [&] { FrictionBrick<RegularizedCoulomb>("bottom", at_rest, moving); }}) {
+    try {
+      make();
+      ADD_FAILURE() << "a friction brick of another motion than its normal brick was accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("give both bricks the same ContactFields::motion"), std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_NO_THROW(AlartCurnierFrictionBrick<>("bottom", std::make_shared<NormalResponseBrick<LinearDampedResponse>>(
+                                                            "bottom", moving), moving));
 }
 
 PiezoContactSpec block(Choice friction) {
