@@ -276,6 +276,12 @@ void Model::check_brick(const Brick& brick) const {
   }
 }
 
+std::vector<int> Model::constrained_dofs(const std::string& unknown) const {
+  require(finalized_, "Model: constrained_dofs('", unknown, "') before finalize()");
+  const auto it = constrained_.find(unknown);
+  return it == constrained_.end() ? std::vector<int>{} : it->second;
+}
+
 int Model::add_brick(std::shared_ptr<Brick> brick) {
   require(brick != nullptr, "Model: add_brick(nullptr)");
   require(!finalized_, "Model: add_brick('", brick->name(), "') after finalize()");

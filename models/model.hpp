@@ -67,6 +67,10 @@ class Model : public DataView, public NonlinearProblem {
   // Sets an unknown's or a data field's values (a data field's change refreshes what reads it).
   void set_values(const std::string& name, const Eigen::VectorXd& values);
   std::vector<std::string> unknowns() const { return unknown_names_; }
+  // Whether a brick brought this unknown (Brick::own_unknowns, e.g. a Lagrange multiplier on a region).
+  bool is_brick_unknown(const std::string& name) const { return restricted_.count(name) > 0; }
+  // An unknown's Dirichlet-constrained (eliminated) dofs, sorted; known from finalize() on.
+  std::vector<int> constrained_dofs(const std::string& unknown) const;
   std::vector<std::string> field_names() const;
 
   // ---- constants --------------------------------------------------------------------------------

@@ -6,6 +6,40 @@ namespace pc {
 namespace {
 
 const std::string field_prefix = "field:", affine_prefix = "affine:", scheme_prefix = "scheme:";
+const std::string error_prefix = "time_error:";
+
+// The time error estimate's history, under time_error:..., so that a resumed run estimates on exactly.
+void save_time_error(const TimeErrorHistory& h, Checkpoint& c) {
+  c.vectors[error_prefix + "times"] = Eigen::Map<const Eigen::VectorXd>(h.times.data(), Eigen::Index(h.times.size()));
+  Eigen::VectorXd pending(Eigen::Index(2 * h.pending.size()));
+  for (size_t i = 0; i < h.pending.size(); ++i) {
+    pending[Eigen::Index(2 * i)] = h.pending[i].order;
+    pending[Eigen::Index(2 * i + 1)] = h.pending[i].constant;
+  }
+  c.vectors[error_prefix + "pending"] = pending;
+  for (const auto& [field, kept] : h.solutions) {
+    for (size_t i = 0; i < kept.size(); ++i) c.vectors[error_prefix + field + ":" + std::to_string(i)] = kept[i];
+    c.vectors[error_prefix + field + ":sum"] = h.sum.at(field);
+    c.numbers[error_prefix + field + ":scale"] = h.scale.at(field);
+  }
+}
+
+TimeErrorHistory restore_time_error(const Checkpoint& c) {
+  TimeErrorHistory h;
+  const auto times = c.vectors.find(error_prefix + "times");
+  if (times == c.vectors.end()) return h;  // a run without the estimate
+  h.times.assign(times->second.data(), times->second.data() + times->second.size());
+  const Eigen::VectorXd& pending = c.vector(error_prefix + "pending");
+  for (Eigen::Index i = 0; i + 1 < pending.size(); i += 2) h.pending.push_back({int(pending[i]), pending[i + 1]});
+  for (const auto& [key, value] : c.numbers) {
+    if (!key.starts_with(error_prefix) || !key.ends_with(":scale")) continue;
+    const std::string field = key.substr(error_prefix.size(), key.size() - error_prefix.size() - 6);
+    h.scale[field] = value;
+    h.sum[field] = c.vector(error_prefix + field + ":sum");
+    for (size_t i = 0; i < h.times.size(); ++i) h.solutions[field].push_back(c.vector(error_prefix + field + ":" + std::to_string(i)));
+  }
+  return h;
+}
 
 }  // namespace
 
@@ -64,6 +98,9 @@ void save_stepper_state(const StepperState& s, Checkpoint& c) {
   c.numbers["stepper:cutbacks"] = s.cutbacks;
   c.numbers["stepper:newton_iterations_total"] = s.newton_iterations_total;
   c.numbers["stepper:newton_iterations_max_per_step"] = s.newton_iterations_max_per_step;
+  c.numbers["stepper:rejections"] = s.rejections;
+  c.numbers["stepper:last_error"] = s.last_error;
+  save_time_error(s.time_error, c);
 }
 
 StepperState restore_stepper_state(const Checkpoint& c) {
@@ -76,6 +113,10 @@ StepperState restore_stepper_state(const Checkpoint& c) {
   s.cutbacks = int(c.number("stepper:cutbacks"));
   s.newton_iterations_total = int(c.number("stepper:newton_iterations_total"));
   s.newton_iterations_max_per_step = int(c.number("stepper:newton_iterations_max_per_step"));
+  // Checkpoints written before adaptive steps existed have neither.
+  if (c.numbers.count("stepper:rejections")) s.rejections = int(c.number("stepper:rejections"));
+  if (c.numbers.count("stepper:last_error")) s.last_error = c.number("stepper:last_error");
+  s.time_error = restore_time_error(c);
   return s;
 }
 

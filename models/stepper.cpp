@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <map>
+#include <optional>
 
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
@@ -20,6 +22,22 @@ void restore_unknowns(Model& model, const std::map<std::string, Eigen::VectorXd>
   for (const auto& [name, values] : saved) model.set_values(name, values);
 }
 
+// The local error of a step over its allowance (tolerance * k / span): accepted at most 1.
+double error_ratio(const TimeErrorReport& e, const AdaptiveSteps& a, double k, double span, const std::string& displacement) {
+  for (const FieldTimeError& f : e.fields)
+    if (f.field == displacement) return f.local / (a.tolerance * k / span);
+  fail("adaptive time steps: the time error estimate has no field '", displacement, "' (the scheme's displacement)");
+}
+
+// Gustafsson's PI controller for an error per unit step (error ~ k^p): the factor on the step size after
+// an accepted step with error ratio `ratio`, the last one's being `last` (0: none yet).
+double controller_factor(const AdaptiveSteps& a, int p, double ratio, double last) {
+  if (ratio <= 0) return a.max_growth;  // no error at all (a solution the scheme integrates exactly)
+  double factor = a.safety * std::pow(1.0 / ratio, 0.3 / p);
+  factor *= last > 0 ? std::pow(last / ratio, 0.4 / p) : std::pow(1.0 / ratio, 0.4 / p);
+  return std::clamp(factor, a.max_cut, a.max_growth);
+}
+
 }  // namespace
 
 Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
@@ -32,6 +50,21 @@ Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
   require(o.output_every >= 1, "output_every must be >= 1, got ", o.output_every);
   require(o.checkpoint_every >= 0, "checkpoint_every must be >= 0 (0: only at a stop), got ", o.checkpoint_every);
   require(o.max_attempts >= 0, "max_attempts must be >= 0 (0: no limit), got ", o.max_attempts);
+  if (o.adaptive) {
+    const AdaptiveSteps& a = *o.adaptive;
+    require(o.estimate_time_error, "adaptive time steps need the time error estimate (estimate_time_error)");
+    require(std::isfinite(a.tolerance) && a.tolerance > 0 && a.tolerance < 1,
+            "adaptive time steps: the tolerance must be in (0, 1), got ", a.tolerance);
+    require(std::isfinite(a.max_step) && a.max_step >= 0, "adaptive time steps: max_step must be >= 0 (0: a tenth of "
+            "the span), got ", a.max_step);
+    require(a.safety > 0 && a.safety <= 1, "adaptive time steps: safety must be in (0, 1], got ", a.safety);
+    require(a.max_growth > 1 && a.max_growth <= 2, "adaptive time steps: max_growth must be in (1, 2], got ",
+            a.max_growth);
+    require(a.max_cut > 0 && a.max_cut < 1, "adaptive time steps: max_cut must be in (0, 1), got ", a.max_cut);
+    require(std::isfinite(a.factorization_cost) && a.factorization_cost >= 0,
+            "adaptive time steps: factorization_cost must be >= 0, got ", a.factorization_cost);
+    if (a.max_step <= 0) options_.adaptive->max_step = (o.end - o.start) / 10;
+  }
   require(std::isfinite(o.max_wall_seconds) && o.max_wall_seconds >= 0,
           "max_wall_seconds must be finite and >= 0 (0: no limit), got ", o.max_wall_seconds);
   if (options_.min_step <= 0) options_.min_step = o.step * 1e-6;
@@ -41,6 +74,8 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
   const StepperOptions& o = options_;
+  std::optional<TimeErrorEstimator> estimator;
+  if (o.estimate_time_error) estimator.emplace(model, scheme, o.time_error_fields);
   StepRecord record;
   StepperState& state = record.state;
   if (o.resume) {
@@ -49,6 +84,8 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
             "resume: the saved time ", state.time, " or step size ", state.step_size, " does not fit the run's span [",
             o.start, ", ", o.end, "]");
     model.set_time(state.time);
+    // A checkpoint of a run without the estimate (or of an older version) starts it afresh here.
+    if (estimator && state.time_error.times.empty()) state.time_error = estimator->start(model);
     record.step = state.steps;
     record.time = state.time;
   } else {
@@ -65,12 +102,14 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
         return summary;
       }
     }
+    if (estimator) state.time_error = estimator->start(model);
     processes::run_agreed("the initial output", [&] {
       if (callbacks.on_output) callbacks.on_output(model, record);
     });
   }
 
-  const double tiny = 1e-12 * (o.end - o.start);
+  const double span = o.end - o.start;
+  const double tiny = 1e-12 * span;
   double& t = state.time;
   double& dt = state.step_size;
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -126,11 +165,49 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       }
       continue;
     }
+    std::optional<TimeErrorStep> estimate;
+    if (estimator) estimate = estimator->evaluate(model, scheme.local_error_term(attempt), state.time_error);
+    double ratio = 0;  // adaptive: the step's error over its allowance
+    if (o.adaptive && estimate->report.estimated) {
+      const AdaptiveSteps& a = *o.adaptive;
+      ratio = error_ratio(estimate->report, a, attempt, span, scheme.fields().displacement);
+      // Above the tolerance: retried smaller, unless it is at the floor already (then kept, as the best
+      // the floor allows).
+      if (ratio > 1 && attempt > o.min_step * (1 + 1e-12)) {
+        restore_unknowns(model, saved);
+        model.set_time(t);
+        ++record.rejections;
+        ++state.rejections;
+        record.cut_back_cost += report;
+        record.cut_back_assembly_seconds += report.assembly_seconds;
+        const double factor = std::clamp(a.safety * std::pow(1.0 / ratio, 1.0 / estimate->report.order), a.max_cut, 0.9);
+        dt = std::max(o.min_step, attempt * factor);
+        continue;
+      }
+    }
     scheme.end_step(model, attempt);
     t = remaining <= dt + tiny ? o.end : t + attempt;
     ++state.steps;
     state.newton_iterations_max_per_step = std::max(state.newton_iterations_max_per_step, report.iterations);
-    if (++state.successes >= o.successes_before_growth && dt < o.step) {
+    if (estimate) {
+      record.time_error = estimate->report;
+      TimeErrorEstimator::commit(std::move(*estimate), state.time_error);
+    }
+    if (o.adaptive) {
+      if (record.time_error.estimated) {
+        const AdaptiveSteps& a = *o.adaptive;
+        double factor = controller_factor(a, record.time_error.order, ratio, state.last_error);
+        // No growth right after a rejection (Hairer and Wanner's rule): the error is rising faster than
+        // the controller's model of it, and a larger step would be rejected again.
+        if (record.rejections > 0) factor = std::min(factor, 1.0);
+        state.last_error = ratio;
+        const double proposed = std::clamp(attempt * factor, o.min_step, a.max_step);
+        // A larger step pays when the steps it saves over the rest of the run outweigh a factorisation.
+        const double saved_steps = (o.end - t) / attempt * (1 - attempt / proposed);
+        if (proposed < attempt || saved_steps > a.factorization_cost) dt = proposed;
+        else dt = std::max(dt, attempt);  // the last step may have been shortened to land on `end`
+      }
+    } else if (++state.successes >= o.successes_before_growth && dt < o.step) {
       dt = std::min(o.step, dt * o.growth_factor);
       state.successes = 0;
     }
@@ -153,6 +230,7 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
         if (callbacks.on_checkpoint) callbacks.on_checkpoint(model, state);
       });
     record.cutbacks = 0;
+    record.rejections = 0;
     record.cut_back_cost = {};
     record.cut_back_assembly_seconds = 0;
   }
@@ -165,6 +243,8 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
   summary.newton_iterations_total = state.newton_iterations_total;
   summary.newton_iterations_max_per_step = state.newton_iterations_max_per_step;
   summary.cutbacks = state.cutbacks;
+  summary.rejections = state.rejections;
+  summary.time_error = record.time_error;
   summary.wall_seconds = elapsed();
   summary.state = state;
   return summary;

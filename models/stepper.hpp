@@ -4,11 +4,14 @@
 // the nominal step after successes, a progress callback after every step and an output callback every N
 // steps (and at the start and the end), so that a long run writes its results as it goes. What a recipe
 // solves before the first step (the piezoelectric model's initial potential) is its own start hook.
+// Every accepted step carries an estimate of the time discretisation's error (models/time_error_estimate.hpp);
+// with StepperOptions::adaptive a controller chooses the step sizes from it.
 #include <functional>
 #include <optional>
 #include <string>
 
 #include "models/solvers/newton.hpp"
+#include "models/time_error_estimate.hpp"
 #include "models/time_scheme.hpp"
 
 namespace pc {
@@ -29,6 +32,24 @@ struct StepperState {
   int cutbacks = 0;
   int newton_iterations_total = 0;
   int newton_iterations_max_per_step = 0;
+  int rejections = 0;       // adaptive steps: attempts whose estimated error was above the tolerance
+  double last_error = 0;    // adaptive steps: the last accepted step's error over its allowance
+  TimeErrorHistory time_error;
+};
+
+// Adaptive time steps: a PI controller (Gustafsson's) on the estimated local error, per unit step: a step
+// of size k is accepted when its local error is at most tolerance * k / (end - start), so that the local
+// errors of a run add up to at most `tolerance`; a step above it is rejected and retried smaller. The
+// step grows at most by max_growth a step (BDF2 stays zero-stable) and only when the steps a larger size
+// saves over the rest of the run are worth the factorisation a new size costs (factorization_cost, in
+// steps); a rejection and a Newton failure (the stepper's cut-back) both shrink it.
+struct AdaptiveSteps {
+  double tolerance = 1e-3;        // relative RMS time error the run aims at (each field's)
+  double max_step = 0;            // 0: (end - start) / 10
+  double safety = 0.9;
+  double max_growth = 2;          // a step at most this many times the last
+  double max_cut = 0.2;           // a rejected step is retried at least this large a fraction of itself
+  double factorization_cost = 2;  // a new step size costs about this many steps' work
 };
 
 struct StepperOptions {
@@ -50,6 +71,11 @@ struct StepperOptions {
   // run there, like a budget, with that reason in its message.
   std::function<std::string()> stop_requested;
   Prediction prediction = Prediction::Zero;
+  // The time error estimate: of these fields (empty: the estimator's default, see TimeErrorEstimator),
+  // and with adaptive, the controller that chooses the steps from it (`step` is then the first step).
+  bool estimate_time_error = true;
+  std::vector<std::string> time_error_fields;
+  std::optional<AdaptiveSteps> adaptive;
   // Continue a stopped run from this state, the model restored to the same point: no start hook and no
   // output of step 0 (they were done), and the budgets count on from the state's attempts.
   std::optional<StepperState> resume;
@@ -60,7 +86,9 @@ struct StepRecord {
   double time = 0;
   double dt = 0;
   int cutbacks = 0;  // failed attempts before this step was accepted
+  int rejections = 0;  // attempts rejected on their estimated error before this one
   NewtonReport newton;
+  TimeErrorReport time_error;  // this step's estimate (empty without estimate_time_error)
   // The work of those failed attempts (their Newton solves' assembly and linear solves), so that a run's
   // time per phase counts every solve it did, not only the accepted ones.
   LinearSolveCost cut_back_cost;
@@ -74,6 +102,8 @@ struct RunSummary {
   int newton_iterations_total = 0;
   int newton_iterations_max_per_step = 0;
   int cutbacks = 0;
+  int rejections = 0;
+  TimeErrorReport time_error;  // at the run's last step
   double wall_seconds = 0;
   std::string message;
   StepperState state;  // where the run ended (a checkpoint at a stop saves it)

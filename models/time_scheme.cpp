@@ -126,6 +126,12 @@ void BDF2::end_step(Model& model, double k) {
   freeze_displacement(model);
 }
 
+LocalErrorTerm BDF2::local_error_term(double k) const {
+  if (euler_step_) return {1, 0.5 * k * k};
+  const double k1 = previous_step_;
+  return {2, k * k * (k + k1) * (k + k1) / (6.0 * (2.0 * k + k1))};
+}
+
 std::map<std::string, double> BDF2::history_state() const {
   return {{"committed_steps", double(committed_)}, {"previous_step", previous_step_}};
 }
@@ -208,6 +214,12 @@ void ThetaScheme::end_step(Model& model, double) {
   model.set_values(history(v), model.values(v));
   started_ = true;
   freeze_displacement(model);
+}
+
+LocalErrorTerm ThetaScheme::local_error_term(double k) const {
+  const double theta = euler_step_ ? 1.0 : theta_;
+  if (theta == 0.5) return {2, -k * k * k / 12.0};
+  return {1, (theta - 0.5) * k * k};
 }
 
 std::map<std::string, double> ThetaScheme::history_state() const { return {{"started", started_ ? 1.0 : 0.0}}; }

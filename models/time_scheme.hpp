@@ -40,6 +40,14 @@ struct KinematicFields {
   std::string acceleration = "a";  // only created when the model has inertia
 };
 
+// The leading term of a step's local error: y_n - y(t_n) = constant * y^(order + 1)(t_n) + ..., y any
+// field the step integrates (u from v, v from a) or follows (an algebraic field such as phi), with the
+// history taken as exact. order 0: the scheme gives none (no estimate is made).
+struct LocalErrorTerm {
+  int order = 0;
+  double constant = 0;
+};
+
 class TimeScheme {
  public:
   virtual ~TimeScheme() = default;
@@ -63,6 +71,12 @@ class TimeScheme {
   // that a checkpoint restores a run exactly: restore_history_state(history_state()) changes nothing.
   virtual std::map<std::string, double> history_state() const { return {}; }
   virtual void restore_history_state(const std::map<std::string, double>& state) { (void)state; }
+  // The local error term of the step of size k begun last (after begin_step(model, k)): what the time
+  // error estimate (models/time_error_estimate.hpp) scales the solution's divided differences by.
+  virtual LocalErrorTerm local_error_term(double k) const {
+    (void)k;
+    return {};
+  }
   const KinematicFields& fields() const { return fields_; }
 
  protected:
@@ -81,6 +95,7 @@ class BackwardEuler : public TimeScheme {
   void begin_step(Model& model, double k) override;
   void end_step(Model& model, double k) override;
   void freeze_displacement(Model& model) override;
+  LocalErrorTerm local_error_term(double k) const override { return {1, 0.5 * k * k}; }  // k^2/2 y''
 
  private:
   bool acceleration_ = false;
@@ -111,6 +126,9 @@ class BDF2 : public TimeScheme {
   bool last_step_was_backward_euler() const { return euler_step_; }
   // The largest step ratio k_n / k_{n-1} taken with the BDF2 formula (1 + sqrt 2: zero-stability).
   static double max_step_ratio();
+  // k^2 (k + k_{n-1})^2 / (6 (2k + k_{n-1})) y^(3), which is 2/9 k^3 y^(3) at a constant step; k^2/2 y''
+  // for a backward Euler step.
+  LocalErrorTerm local_error_term(double k) const override;
   std::map<std::string, double> history_state() const override;
   void restore_history_state(const std::map<std::string, double>& state) override;
 
@@ -151,6 +169,8 @@ class ThetaScheme : public TimeScheme {
   void end_step(Model& model, double k) override;
   void freeze_displacement(Model& model) override;
   bool last_step_was_backward_euler() const { return euler_step_; }
+  // -k^3/12 y^(3) at theta = 1/2 (the trapezoidal rule), (theta - 1/2) k^2 y'' otherwise.
+  LocalErrorTerm local_error_term(double k) const override;
   std::map<std::string, double> history_state() const override;
   void restore_history_state(const std::map<std::string, double>& state) override;
 

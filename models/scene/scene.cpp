@@ -198,6 +198,21 @@ void require_points_in_mesh(const PointLocator& locator, const Json& at, const s
             x[2], ") is outside the mesh");
 }
 
+// time.adaptive: the tolerance alone, or an object with it and the controller's bounds.
+AdaptiveSteps read_adaptive_steps(const Json& a, double end_time) {
+  AdaptiveSteps steps;
+  if (a.is_number()) {
+    steps.tolerance = a.as_number_in(1e-12, 0.5);
+    return steps;
+  }
+  require(a.is_object(), "scene: '", a.path(), "' must be a tolerance (e.g. 1e-3) or an object with \"tolerance\"");
+  require_known_keys(a, {"tolerance", "max_step", "factorization_cost"});
+  steps.tolerance = a.at("tolerance").as_number_in(1e-12, 0.5);
+  if (const auto x = a.find("max_step")) steps.max_step = x->as_number_in(1e-300, end_time);
+  if (const auto x = a.find("factorization_cost")) steps.factorization_cost = x->as_number_in(0, 1e6);
+  return steps;
+}
+
 // output.vtu_fields: a non-empty list of the arrays the files can hold, each once, the electric ones only
 // for a piezoelectric body.
 std::vector<std::string> read_vtu_fields(const Json& list, bool electric) {
@@ -505,13 +520,14 @@ Scene load_scene(const Json& json, const std::string& directory) {
     const Json& t = json.at("time");
     const auto& scheme = chosen_entry(t, "scheme", time_scheme_registry(), "backward_euler");
     const ChosenEntry chosen{"time.scheme '" + scheme.name + "'", &scheme.parameters};
-    require_read_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "max_attempts", "max_wall_seconds"},
+    require_read_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "max_attempts", "max_wall_seconds", "adaptive"},
                       {chosen}, {registered_parameters("time.scheme", time_scheme_registry())});
     spec.scheme = {scheme.name, read_parameters(t, chosen)};
     scene.end_time = t.at("T").as_positive();
     scene.steps = t.at("steps").as_int_at_least(1);
     if (const auto x = t.find("max_attempts")) scene.max_attempts = x->as_int_at_least(0);
     if (const auto x = t.find("max_wall_seconds")) scene.max_wall_seconds = x->as_number_in(0, 1e12);
+    if (const auto x = t.find("adaptive")) scene.adaptive = read_adaptive_steps(*x, scene.end_time);
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     const std::string p = t.contains("prediction") ? t.at("prediction").as_string() : "previous";

@@ -81,6 +81,9 @@ struct Scene {
   double cutback_factor = 0.5;
   int max_attempts = 0;           // time.max_attempts: step attempts, accepted or cut back (0: no limit)
   double max_wall_seconds = 0;    // time.max_wall_seconds (0: no limit)
+  // time.adaptive: a tolerance, or {"tolerance", "max_step", "factorization_cost"}; time.steps then sets
+  // the first step (StepperOptions::adaptive).
+  std::optional<AdaptiveSteps> adaptive;
   int threads = 0;                // solver.threads: of the element loops and products (0: assembly/threads.hpp's default)
   SceneOutput output;
 };

@@ -215,6 +215,22 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
   write_finite_csv(dir + "/final_cells.csv", {"n0", "n1", "n2", "von_mises", "phi_mean"}, cell_rows);
 }
 
+// A field's estimated global time error in a step's report (0 where the step has none).
+double global_time_error(const TimeErrorReport& report, const std::string& field) {
+  for (const FieldTimeError& f : report.fields)
+    if (f.field == field) return f.global;
+  return 0;
+}
+
+// The stepper's counts without the time error estimate's history (vectors of the mesh's size), which a
+// copy per step would not afford.
+StepperState counts_of(const StepperState& s) {
+  return {.time = s.time, .step_size = s.step_size, .steps = s.steps, .successes = s.successes,
+          .attempts = s.attempts, .cutbacks = s.cutbacks, .newton_iterations_total = s.newton_iterations_total,
+          .newton_iterations_max_per_step = s.newton_iterations_max_per_step, .rejections = s.rejections,
+          .last_error = s.last_error, .time_error = {}};
+}
+
 // history.csv, a row per step: the corner's u_y (and u_z in 3D), the centre's potential, Newton's iterations.
 std::vector<std::string> history_columns(int dim) {
   if (dim == 3) return {"t", "uy_corner", "uz_corner", "phi_center", "newton_iterations"};
@@ -261,6 +277,21 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   s.set("ndof", Json(double(r.ndof)));
   s.set("newton_iterations_total", Json(double(r.newton_iterations_total)));
   s.set("newton_iterations_max_per_step", Json(double(r.newton_iterations_max_per_step)));
+  // The estimated time error at the end (relative RMS per field), and what the adaptive steps did.
+  Json time_error = Json::object();
+  double time_error_max = 0;
+  for (const FieldTimeError& f : r.time_error) {
+    time_error.set(f.field, finite_or_null(f.global));
+    time_error_max = std::max(time_error_max, f.global);
+  }
+  s.set("time_error", std::move(time_error));
+  s.set("time_error_max", finite_or_null(time_error_max));
+  if (scene.adaptive) {
+    Json adaptive = Json::object();
+    adaptive.set("tolerance", Json(scene.adaptive->tolerance));
+    adaptive.set("rejections", Json(double(r.rejections)));
+    s.set("adaptive", std::move(adaptive));
+  }
   s.set("wall_s_total", Json(r.wall_seconds));
   s.set("threads", Json(double(assembly_threads())));
   if (!r.linear_strategy.empty()) s.set("linear_strategy", Json(r.linear_strategy));
@@ -412,6 +443,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   options.output_every = scene.output.vtu_every;
   options.max_attempts = scene.max_attempts;
   options.max_wall_seconds = scene.max_wall_seconds;
+  options.adaptive = scene.adaptive;
   options.checkpoint_every = dir.empty() ? 0 : scene.output.checkpoint_every;  // the writer's callback writes
   options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
@@ -419,6 +451,11 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   // Each electrode's V, Q and I join the history's columns.
   ElectrodeMeter electrodes(scene.spec.electrodes);
   std::vector<std::string> history_header = history_columns(dim);
+  // The step size and the time error estimate (models/time_error_estimate.hpp): the step's local error and
+  // each field's estimated global error, relative.
+  const std::vector<std::string> error_fields = TimeErrorEstimator::default_fields(m, *built.scheme);
+  history_header.insert(history_header.end(), {"dt", "err_time_step"});
+  for (const std::string& f : error_fields) history_header.push_back("err_time_" + f);
   for (const std::string& column : electrodes.columns()) history_header.push_back(column);
   // With contact, the foundation's resultant force on the body and its power.
   const bool contact = built.normal != nullptr;
@@ -574,10 +611,12 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     cut_back.assembly_seconds = r.cut_back_assembly_seconds;
     add_phases(cut_back);
     note_linear_strategy();
-    done = r.state;
+    done = counts_of(r.state);
     require_finite_state(model, when(r));
     timed_output([&] {
       std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
+      row.insert(row.end(), {r.dt, r.time_error.max_local()});
+      for (const std::string& f : error_fields) row.push_back(global_time_error(r.time_error, f));
       for (const ElectrodeReading& e : electrodes.read(model)) row.insert(row.end(), {e.voltage, e.charge, e.current});
       if (contact) {
         const ContactResultant resultant = contact_resultant(built);
@@ -658,6 +697,8 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     result.newton_iterations_total = run.newton_iterations_total;
     result.newton_iterations_max_per_step = run.newton_iterations_max_per_step;
     result.cutbacks = run.cutbacks;
+    result.rejections = run.rejections;
+    result.time_error = run.time_error.fields;
     result.message = run.message;
     // A completed run has nothing to resume: its checkpoint would only be mistaken for a stopped run's.
     if (run.completed && !dir.empty() && writer) std::filesystem::remove(checkpoint_path);

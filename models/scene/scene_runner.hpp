@@ -50,6 +50,8 @@ struct FoundationRunResult {
   bool completed = false;
   int steps = 0, ndof = 0, newton_iterations_total = 0, newton_iterations_max_per_step = 0;
   int cutbacks = 0;  // failed step attempts that were retried with a smaller step
+  int rejections = 0;  // time.adaptive: attempts rejected on their estimated time error
+  std::vector<FieldTimeError> time_error;  // the estimated time error at the end, per field (global)
   double wall_seconds = 0;
   double max_abs_ux = 0, max_abs_uy = 0, phi_min = 0, phi_max = 0, uy_corner = 0, ux_corner = 0, phi_center = 0;
   int dim = 2;                            // of the mesh: max_abs_uz and uz_corner are results in 3D only

@@ -122,6 +122,56 @@ INSTANTIATE_TEST_SUITE_P(EachScheme, ResumedRun,
                                            Choice{"theta", {{"theta", 0.5}}}),
                          [](const auto& info) { return info.param.name; });
 
+// An adaptive run stopped part-way, its checkpoint written to disk and read back, continues with the
+// same step sizes, rejections and time error estimate as the run that was not stopped: the estimate's
+// history (the last solutions, the sum of local errors, the scales) is in the checkpoint.
+class ResumedAdaptiveRun : public testing::TemporaryDirectoryTest {};
+
+TEST_F(ResumedAdaptiveRun, ContinuesTheStepsAndTheEstimateExactly) {
+  StepperOptions adaptive = twelve_steps();
+  adaptive.adaptive = AdaptiveSteps{};
+  adaptive.adaptive->tolerance = 1e-3;
+  NewtonSolver newton;
+  PiezoContactModel whole = paper_model({"bdf2", {}});
+  const RunSummary uninterrupted = Stepper(adaptive).run(*whole.model, *whole.scheme, newton);
+  ASSERT_TRUE(uninterrupted.completed) << uninterrupted.message;
+  ASSERT_GT(uninterrupted.steps, 8) << "the stop below should fall inside the run";
+
+  PiezoContactModel first = paper_model({"bdf2", {}});
+  StepperOptions stopping = adaptive;
+  stopping.max_attempts = 6;
+  const std::string path = (directory_ / "checkpoint.bin").string();
+  StepperCallbacks callbacks;
+  callbacks.on_checkpoint = [&](const Model& m, const StepperState& state) {
+    Checkpoint c;
+    save_model_state(m, *first.scheme, c);
+    save_stepper_state(state, c);
+    write_checkpoint(path, c);
+  };
+  NewtonSolver first_newton;
+  ASSERT_FALSE(Stepper(stopping).run(*first.model, *first.scheme, first_newton, callbacks).completed);
+
+  PiezoContactModel second = paper_model({"bdf2", {}});
+  const Checkpoint checkpoint = read_checkpoint(path);
+  restore_model_state(*second.model, *second.scheme, checkpoint);
+  StepperOptions resuming = adaptive;
+  resuming.resume = restore_stepper_state(checkpoint);
+  NewtonSolver second_newton;
+  const RunSummary rest = Stepper(resuming).run(*second.model, *second.scheme, second_newton);
+  ASSERT_TRUE(rest.completed) << rest.message;
+  EXPECT_EQ(rest.steps, uninterrupted.steps);
+  EXPECT_EQ(rest.rejections, uninterrupted.rejections);
+  EXPECT_EQ(rest.state.step_size, uninterrupted.state.step_size);
+  ASSERT_EQ(rest.time_error.fields.size(), uninterrupted.time_error.fields.size());
+  for (size_t i = 0; i < rest.time_error.fields.size(); ++i) {
+    EXPECT_GT(uninterrupted.time_error.fields[i].global, 0) << uninterrupted.time_error.fields[i].field;
+    EXPECT_EQ(rest.time_error.fields[i].global, uninterrupted.time_error.fields[i].global)
+        << rest.time_error.fields[i].field;
+  }
+  for (const char* field : {"v", "u", "phi"})
+    EXPECT_EQ((second.model->values(field) - whole.model->values(field)).cwiseAbs().maxCoeff(), 0.0) << field;
+}
+
 TEST(ModelState, ACheckpointOfAnotherModelIsRefusedAndChangesNothing) {
   PiezoContactModel coarse = paper_model({"backward_euler", {}});
   Checkpoint checkpoint;
