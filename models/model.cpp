@@ -176,6 +176,17 @@ std::vector<double> Model::affine_coefficients(const std::string& name) const {
   return f.kind == FieldKind::Affine ? f.coefficients : std::vector<double>{};
 }
 
+std::vector<std::string> Model::affine_history(const std::string& name) const {
+  const Field& f = field(name);
+  return f.kind == FieldKind::Affine ? f.history : std::vector<std::string>{};
+}
+
+const std::string& Model::affine_base(const std::string& name) const {
+  const Field& f = field(name);
+  require(f.kind == FieldKind::Affine, "Model: '", name, "' is not an affine field");
+  return f.base;
+}
+
 FieldKind Model::field_kind(const std::string& name) const { return field(name).kind; }
 const FESpace& Model::space(const std::string& name) const { return *field(name).space; }
 std::shared_ptr<const FESpace> Model::space_ptr(const std::string& name) const { return field(name).space; }

@@ -57,6 +57,9 @@ class Model : public DataView, public NonlinearProblem {
   double affine_factor(const std::string& name) const;
   // An affine field's history coefficients, in the order of its history fields (empty for other fields).
   std::vector<double> affine_coefficients(const std::string& name) const;
+  // An affine field's history fields, in order (empty for other fields).
+  std::vector<std::string> affine_history(const std::string& name) const;
+  const std::string& affine_base(const std::string& name) const;  // the unknown an affine field is of
 
   bool has_field(const std::string& name) const { return fields_.count(name) > 0; }
   FieldKind field_kind(const std::string& name) const;

@@ -19,9 +19,12 @@ void save_time_error(const TimeErrorHistory& h, Checkpoint& c) {
   c.vectors[error_prefix + "pending"] = pending;
   for (const auto& [field, kept] : h.solutions) {
     for (size_t i = 0; i < kept.size(); ++i) c.vectors[error_prefix + field + ":" + std::to_string(i)] = kept[i];
-    c.vectors[error_prefix + field + ":sum"] = h.sum.at(field);
+  }
+  for (const auto& [field, error] : h.error) {
+    c.vectors[error_prefix + field + ":error"] = error;
     c.numbers[error_prefix + field + ":scale"] = h.scale.at(field);
   }
+  for (const auto& [field, error] : h.history_errors) c.vectors[error_prefix + "history:" + field] = error;
 }
 
 TimeErrorHistory restore_time_error(const Checkpoint& c) {
@@ -35,8 +38,25 @@ TimeErrorHistory restore_time_error(const Checkpoint& c) {
     if (!key.starts_with(error_prefix) || !key.ends_with(":scale")) continue;
     const std::string field = key.substr(error_prefix.size(), key.size() - error_prefix.size() - 6);
     h.scale[field] = value;
-    h.sum[field] = c.vector(error_prefix + field + ":sum");
-    for (size_t i = 0; i < h.times.size(); ++i) h.solutions[field].push_back(c.vector(error_prefix + field + ":" + std::to_string(i)));
+    h.error[field] = c.vector(error_prefix + field + ":error");
+  }
+  // The kept solutions, "time_error:<field>:<i>", and the history fields' errors, "time_error:history:<field>".
+  const std::string history_prefix = error_prefix + "history:";
+  for (const auto& [key, vector] : c.vectors) {
+    if (key.starts_with(history_prefix)) {
+      h.history_errors[key.substr(history_prefix.size())] = vector;
+      continue;
+    }
+    if (!key.starts_with(error_prefix) || key.ends_with(":error") || key == error_prefix + "times" ||
+        key == error_prefix + "pending")
+      continue;
+    const std::string rest = key.substr(error_prefix.size());
+    const size_t colon = rest.rfind(':');
+    if (colon == std::string::npos) continue;
+    std::vector<Eigen::VectorXd>& kept = h.solutions[rest.substr(0, colon)];
+    const size_t index = std::stoul(rest.substr(colon + 1));
+    if (kept.size() <= index) kept.resize(index + 1);
+    kept[index] = vector;
   }
   return h;
 }

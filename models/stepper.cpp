@@ -22,19 +22,28 @@ void restore_unknowns(Model& model, const std::map<std::string, Eigen::VectorXd>
   for (const auto& [name, values] : saved) model.set_values(name, values);
 }
 
-// The local error of a step over its allowance (tolerance * k / span): accepted at most 1.
-double error_ratio(const TimeErrorReport& e, const AdaptiveSteps& a, double k, double span, const std::string& displacement) {
-  for (const FieldTimeError& f : e.fields)
-    if (f.field == displacement) return f.local / (a.tolerance * k / span);
-  fail("adaptive time steps: the time error estimate has no field '", displacement, "' (the scheme's displacement)");
+// The local error of a step over the tolerance: accepted at most 1.
+double error_ratio(const TimeErrorReport& e, const AdaptiveSteps& a, TimeErrorPropagation p,
+                   const std::string& displacement) {
+  double local = 0;
+  if (p == TimeErrorPropagation::Linearised) {
+    local = e.max_local();
+  } else {
+    const FieldTimeError* u = e.field(displacement);
+    require(u != nullptr, "adaptive time steps: the time error estimate has no field '", displacement,
+            "' (the scheme's displacement)");
+    local = u->local;
+  }
+  return local / a.tolerance;
 }
 
-// Gustafsson's PI controller for an error per unit step (error ~ k^p): the factor on the step size after
+// Gustafsson's PI controller for an error per step (error ~ k^(p+1)): the factor on the step size after
 // an accepted step with error ratio `ratio`, the last one's being `last` (0: none yet).
 double controller_factor(const AdaptiveSteps& a, int p, double ratio, double last) {
   if (ratio <= 0) return a.max_growth;  // no error at all (a solution the scheme integrates exactly)
-  double factor = a.safety * std::pow(1.0 / ratio, 0.3 / p);
-  factor *= last > 0 ? std::pow(last / ratio, 0.4 / p) : std::pow(1.0 / ratio, 0.4 / p);
+  const double q = p + 1;
+  double factor = a.safety * std::pow(1.0 / ratio, 0.3 / q);
+  factor *= last > 0 ? std::pow(last / ratio, 0.4 / q) : std::pow(1.0 / ratio, 0.4 / q);
   return std::clamp(factor, a.max_cut, a.max_growth);
 }
 
@@ -75,7 +84,14 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
   RunSummary summary;
   const StepperOptions& o = options_;
   std::optional<TimeErrorEstimator> estimator;
-  if (o.estimate_time_error) estimator.emplace(model, scheme, o.time_error_fields);
+  if (o.estimate_time_error) estimator.emplace(model, scheme, o.time_error_propagation, o.time_error_fields);
+  // The linearised estimate's solves, with the tangent of the step just solved; their cost is the step's.
+  LinearSolveCost estimate_cost;
+  const TimeErrorEstimator::TangentSolve tangent_solve = [&](const Eigen::VectorXd& rhs) {
+    return newton.solve_tangent(model, rhs, estimate_cost);
+  };
+  const TimeErrorEstimator::TangentSolve* solve =
+      o.time_error_propagation == TimeErrorPropagation::Linearised ? &tangent_solve : nullptr;
   StepRecord record;
   StepperState& state = record.state;
   if (o.resume) {
@@ -166,11 +182,19 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       continue;
     }
     std::optional<TimeErrorStep> estimate;
-    if (estimator) estimate = estimator->evaluate(model, scheme.local_error_term(attempt), state.time_error);
+    if (estimator) {
+      estimate_cost = {};
+      const auto started = std::chrono::steady_clock::now();
+      estimate = estimator->evaluate(model, scheme.local_error_term(attempt), state.time_error, solve);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      static_cast<LinearSolveCost&>(report) += estimate_cost;
+      report.assembly_seconds += std::max(0.0, seconds - (estimate_cost.analyze_seconds + estimate_cost.factorize_seconds +
+                                                          estimate_cost.solve_seconds + estimate_cost.condensation_seconds));
+    }
     double ratio = 0;  // adaptive: the step's error over its allowance
     if (o.adaptive && estimate->report.estimated) {
       const AdaptiveSteps& a = *o.adaptive;
-      ratio = error_ratio(estimate->report, a, attempt, span, scheme.fields().displacement);
+      ratio = error_ratio(estimate->report, a, o.time_error_propagation, scheme.fields().displacement);
       // Above the tolerance: retried smaller, unless it is at the floor already (then kept, as the best
       // the floor allows).
       if (ratio > 1 && attempt > o.min_step * (1 + 1e-12)) {
@@ -180,7 +204,7 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
         ++state.rejections;
         record.cut_back_cost += report;
         record.cut_back_assembly_seconds += report.assembly_seconds;
-        const double factor = std::clamp(a.safety * std::pow(1.0 / ratio, 1.0 / estimate->report.order), a.max_cut, 0.9);
+        const double factor = std::clamp(a.safety * std::pow(1.0 / ratio, 1.0 / (estimate->report.order + 1)), a.max_cut, 0.9);
         dt = std::max(o.min_step, attempt * factor);
         continue;
       }

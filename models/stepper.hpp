@@ -39,7 +39,9 @@ struct StepperState {
 
 // Adaptive time steps: a PI controller (Gustafsson's) on the estimated local error, per unit step: a step
 // of size k is accepted when its local error is at most tolerance * k / (end - start), so that the local
-// errors of a run add up to at most `tolerance`; a step above it is rejected and retried smaller. The
+// errors of a run add up to at most `tolerance`. The error controlled is the largest of the reported
+// fields' under the linearised estimate (filtered: stiff modes do not shrink the step), the displacement's
+// under the summed one (whose raw velocity error would chase the stiff modes); a step above it is rejected and retried smaller. The
 // step grows at most by max_growth a step (BDF2 stays zero-stable) and only when the steps a larger size
 // saves over the rest of the run are worth the factorisation a new size costs (factorization_cost, in
 // steps); a rejection and a Newton failure (the stepper's cut-back) both shrink it.
@@ -74,6 +76,7 @@ struct StepperOptions {
   // The time error estimate: of these fields (empty: the estimator's default, see TimeErrorEstimator),
   // and with adaptive, the controller that chooses the steps from it (`step` is then the first step).
   bool estimate_time_error = true;
+  TimeErrorPropagation time_error_propagation = TimeErrorPropagation::Linearised;
   std::vector<std::string> time_error_fields;
   std::optional<AdaptiveSteps> adaptive;
   // Continue a stopped run from this state, the model restored to the same point: no start hook and no

@@ -52,17 +52,43 @@ double TimeErrorReport::max_global() const {
   return m;
 }
 
-std::vector<std::string> TimeErrorEstimator::default_fields(const Model& model, const TimeScheme& scheme) {
+const FieldTimeError* TimeErrorReport::field(const std::string& name) const {
+  for (const FieldTimeError& f : fields)
+    if (f.field == name) return &f;
+  return nullptr;
+}
+
+std::vector<std::string> TimeErrorEstimator::default_fields(const Model& model, const TimeScheme& scheme,
+                                                            TimeErrorPropagation propagation) {
   const KinematicFields& k = scheme.fields();
   std::vector<std::string> fields{k.displacement};
-  if (model.has_field(k.acceleration)) fields.push_back(k.velocity);
+  const bool inertia = model.has_field(k.acceleration);
+  if (inertia || propagation == TimeErrorPropagation::Linearised) fields.push_back(k.velocity);
+  if (propagation == TimeErrorPropagation::Linearised)
+    for (const std::string& u : model.unknowns())
+      if (u != k.velocity && !model.is_brick_unknown(u)) fields.push_back(u);
   return fields;
 }
 
-TimeErrorEstimator::TimeErrorEstimator(const Model& model, const TimeScheme& scheme, std::vector<std::string> fields)
-    : fields_(fields.empty() ? default_fields(model, scheme) : std::move(fields)) {
-  for (const std::string& f : fields_) {
+TimeErrorEstimator::TimeErrorEstimator(const Model& model, const TimeScheme& scheme, TimeErrorPropagation propagation,
+                                       std::vector<std::string> fields)
+    : propagation_(propagation),
+      kinematics_(scheme.fields()),
+      fields_(fields.empty() ? default_fields(model, scheme, propagation) : std::move(fields)) {
+  integrated_ = {kinematics_.displacement};
+  if (model.has_field(kinematics_.acceleration)) integrated_.push_back(kinematics_.velocity);
+  for (const std::string& f : integrated_)
+    require(propagation == TimeErrorPropagation::Linearised ||
+                std::find(fields_.begin(), fields_.end(), f) != fields_.end(),
+            "time error estimate: a summed estimate reports the integrated field '", f, "'");
+  std::vector<std::string> all = fields_;
+  all.insert(all.end(), integrated_.begin(), integrated_.end());
+  for (const std::string& f : all) {
     require(model.has_field(f), "time error estimate: the model has no field '", f, "'");
+    if (propagation == TimeErrorPropagation::Summed)
+      require(std::find(integrated_.begin(), integrated_.end(), f) != integrated_.end(),
+              "time error estimate: '", f, "' is not integrated in time (an algebraic field), so only the "
+              "linearised estimate gives its error");
     std::vector<char> mask(size_t(model.space(f).num_dofs()), 1);
     if (model.field_kind(f) == FieldKind::Unknown)
       for (int d : model.constrained_dofs(f)) mask[size_t(d)] = 0;
@@ -85,17 +111,16 @@ double TimeErrorEstimator::rms(const std::string& field, const Eigen::VectorXd& 
 TimeErrorHistory TimeErrorEstimator::start(const Model& model) const {
   TimeErrorHistory h;
   h.times = {model.time()};
+  for (const std::string& f : integrated_) h.solutions[f] = {model.values(f)};
   for (const std::string& f : fields_) {
-    const Eigen::VectorXd& y = model.values(f);
-    h.solutions[f] = {y};
-    h.sum[f] = Eigen::VectorXd::Zero(y.size());
-    h.scale[f] = rms(f, y);
+    h.error[f] = Eigen::VectorXd::Zero(model.values(f).size());
+    h.scale[f] = rms(f, model.values(f));
   }
   return h;
 }
 
-TimeErrorStep TimeErrorEstimator::evaluate(const Model& model, LocalErrorTerm term,
-                                           const TimeErrorHistory& history) const {
+TimeErrorStep TimeErrorEstimator::evaluate(Model& model, LocalErrorTerm term, const TimeErrorHistory& history,
+                                           const TangentSolve* solve) const {
   TimeErrorStep step;
   step.time = model.time();
   std::vector<double> times{step.time};
@@ -108,27 +133,145 @@ TimeErrorStep TimeErrorEstimator::evaluate(const Model& model, LocalErrorTerm te
   step.report.order = step.report.estimated ? term.order : 0;
   for (const LocalErrorTerm& t : waiting)
     if (!available(t)) step.pending.push_back(t);
-  for (const std::string& f : fields_) {
+
+  // Each integrated field's local error: this step's, and the back-filled one of steps still waiting.
+  std::map<std::string, Eigen::VectorXd> local, backfilled;
+  for (const std::string& f : integrated_) {
     const Eigen::VectorXd& y = model.values(f);
     std::vector<const Eigen::VectorXd*> values{&y};
     for (const Eigen::VectorXd& old : history.solutions.at(f)) values.push_back(&old);
     std::map<int, Eigen::VectorXd> derivatives;  // by order of the derivative
-    Eigen::VectorXd sum = history.sum.at(f), local = Eigen::VectorXd::Zero(y.size());
+    backfilled[f] = Eigen::VectorXd::Zero(y.size());
+    local[f] = Eigen::VectorXd::Zero(y.size());
     for (const LocalErrorTerm& t : waiting) {
       if (!available(t)) continue;
       const int q = t.order + 1;
       if (!derivatives.count(q)) derivatives[q] = *derivative(q, times, values);
-      sum += t.constant * derivatives[q];
+      if (&t != &waiting.back() || !step.report.estimated) backfilled[f] += t.constant * derivatives[q];
     }
-    if (step.report.estimated) local = history_correction(term, times) * term.constant * derivatives.at(term.order + 1);
+    if (step.report.estimated)
+      local[f] = history_correction(term, times) * term.constant * derivatives.at(term.order + 1);
+  }
+
+  std::map<std::string, Eigen::VectorXd> error, shown_local;
+  if (solve) {
+    const Propagated p = propagate(model, local, backfilled, history, *solve);
+    error = p.error;
+    shown_local = p.local;
+    step.history_errors = p.history_errors;
+  } else {
+    for (const std::string& f : fields_) {
+      error[f] = history.error.at(f) + local.at(f) + backfilled.at(f);
+      shown_local[f] = local.at(f);
+    }
+  }
+  for (const std::string& f : fields_) {
+    const Eigen::VectorXd& y = model.values(f);
     const double scale = std::max(history.scale.at(f), rms(f, y));
     const auto relative = [&](const Eigen::VectorXd& e) { return scale > 0 ? rms(f, e) / scale : 0.0; };
-    step.report.fields.push_back({f, relative(local), relative(sum), scale});
-    step.solution[f] = y;
-    step.sum[f] = std::move(sum);
+    step.report.fields.push_back({f, relative(shown_local.at(f)), relative(error.at(f)), scale});
     step.scale[f] = scale;
   }
+  for (const std::string& f : integrated_) step.solution[f] = model.values(f);
+  step.error = std::move(error);
   return step;
+}
+
+TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const FieldVectors& local,
+                                                             const FieldVectors& backfilled,
+                                                             const TimeErrorHistory& history,
+                                                             const TangentSolve& solve) const {
+  const std::string &u = kinematics_.displacement, &v = kinematics_.velocity, &a = kinematics_.acceleration;
+  const bool inertia = model.has_field(a);
+  std::vector<std::string> affine{u};
+  if (inertia) affine.push_back(a);
+  std::vector<std::string> history_fields;  // what the affine fields read: u_prev, v_prev, ...
+  for (const std::string& f : affine)
+    for (const std::string& h : model.affine_history(f))
+      if (std::find(history_fields.begin(), history_fields.end(), h) == history_fields.end()) history_fields.push_back(h);
+  const auto coefficient = [&](const std::string& f, const std::string& h) {
+    const std::vector<std::string> names = model.affine_history(f);
+    const auto it = std::find(names.begin(), names.end(), h);
+    return it == names.end() ? 0.0 : model.affine_coefficients(f)[size_t(it - names.begin())];
+  };
+
+  // Two perturbations of the history: the errors it carries, and this step's local errors, put where the
+  // scheme takes the last value from (u's into u_prev over its coefficient in u, so that u moves by it;
+  // v's into v_prev, so that the acceleration moves as if v had).
+  FieldVectors carried, injected;
+  for (const std::string& h : history_fields) {
+    const Eigen::Index n = model.values(h).size();
+    const auto it = history.history_errors.find(h);
+    carried[h] = it != history.history_errors.end() ? it->second : Eigen::VectorXd::Zero(n);
+    injected[h] = Eigen::VectorXd::Zero(n);
+  }
+  // The first steps' local errors, back-filled now, count with the history's: they are not this step's,
+  // whose error alone the step size controls.
+  const std::string u_prev = u + "_prev", v_prev = v + "_prev";
+  const auto put = [&](FieldVectors& into, const std::string& h, const Eigen::VectorXd& e, double weight) {
+    if (into.count(h) && std::isfinite(weight)) into[h] += weight * e;
+  };
+  const double through_u = 1.0 / coefficient(u, u_prev);
+  put(injected, u_prev, local.at(u), through_u);
+  put(carried, u_prev, backfilled.at(u), through_u);
+  if (inertia) {
+    const double through_a = -model.affine_factor(a) / coefficient(a, v_prev);
+    put(injected, v_prev, local.at(v), through_a);
+    put(carried, v_prev, backfilled.at(v), through_a);
+  }
+
+  // The response of the step's solution to a history perturbation P, linearised: J dx = -(dR/dh) P, the
+  // derivative taken by a difference of residuals (exact for the linear bricks).
+  const Eigen::VectorXd converged_residual = model.residual();
+  const DofLayout& layout = model.layout();
+  const auto response = [&](const FieldVectors& perturbation) {
+    double largest_history = 0, largest_perturbation = 0;
+    for (const auto& [h, p] : perturbation) {
+      largest_history = std::max(largest_history, model.values(h).lpNorm<Eigen::Infinity>());
+      largest_perturbation = std::max(largest_perturbation, p.lpNorm<Eigen::Infinity>());
+    }
+    FieldVectors delta;
+    for (const std::string& f : model.unknowns()) delta[f] = Eigen::VectorXd::Zero(model.values(f).size());
+    if (largest_perturbation > 0) {
+      const double eps = 1e-7 * std::max(largest_history, 1e-300) / largest_perturbation;
+      FieldVectors kept;
+      for (const auto& [h, p] : perturbation) {
+        kept[h] = model.values(h);
+        model.set_values(h, kept[h] + eps * p);
+      }
+      model.assemble(false);
+      const Eigen::VectorXd dR = (model.residual() - converged_residual) / eps;
+      for (const auto& [h, values] : kept) model.set_values(h, values);
+      const Eigen::VectorXd dx = solve(-dR);
+      for (const std::string& f : model.unknowns()) layout.add_from_global(layout.field_index(f), dx, delta[f]);
+    }
+    for (const std::string& f : affine) {
+      Eigen::VectorXd d = model.affine_factor(f) * delta.at(model.affine_base(f));
+      for (const auto& [h, p] : perturbation) d += coefficient(f, h) * p;
+      delta[f] = std::move(d);
+    }
+    return delta;
+  };
+  const FieldVectors from_history = response(carried), from_step = response(injected);
+  model.assemble(false);  // the converged residual again, for what reads it after the step
+
+  Propagated out;
+  for (const std::string& f : fields_) {
+    out.error[f] = from_history.at(f) + from_step.at(f);
+    out.local[f] = from_step.at(f);
+  }
+  // The history shifts as the scheme's does: X_prev2 takes X_prev's error, X_prev takes X_n's.
+  for (const std::string& h : history_fields) {
+    if (h.ends_with("_prev2")) {
+      const std::string last = h.substr(0, h.size() - 1);
+      out.history_errors[h] = carried.count(last) ? carried.at(last) : Eigen::VectorXd::Zero(model.values(h).size());
+    } else if (h.ends_with("_prev")) {
+      const std::string x = h.substr(0, h.size() - 5);
+      out.history_errors[h] = from_history.count(x) ? Eigen::VectorXd(from_history.at(x) + from_step.at(x))
+                                                     : Eigen::VectorXd::Zero(model.values(h).size());
+    }
+  }
+  return out;
 }
 
 void TimeErrorEstimator::commit(TimeErrorStep&& step, TimeErrorHistory& h) {
@@ -139,7 +282,8 @@ void TimeErrorEstimator::commit(TimeErrorStep&& step, TimeErrorHistory& h) {
     kept.insert(kept.begin(), std::move(y));
     if (kept.size() > kept_solutions) kept.resize(kept_solutions);
   }
-  h.sum = std::move(step.sum);
+  h.error = std::move(step.error);
+  h.history_errors = std::move(step.history_errors);
   h.scale = std::move(step.scale);
   h.pending = std::move(step.pending);
 }

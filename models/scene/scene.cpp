@@ -520,14 +520,26 @@ Scene load_scene(const Json& json, const std::string& directory) {
     const Json& t = json.at("time");
     const auto& scheme = chosen_entry(t, "scheme", time_scheme_registry(), "backward_euler");
     const ChosenEntry chosen{"time.scheme '" + scheme.name + "'", &scheme.parameters};
-    require_read_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "max_attempts", "max_wall_seconds", "adaptive"},
+    require_read_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "max_attempts", "max_wall_seconds", "adaptive",
+                           "error_estimate"},
                       {chosen}, {registered_parameters("time.scheme", time_scheme_registry())});
     spec.scheme = {scheme.name, read_parameters(t, chosen)};
     scene.end_time = t.at("T").as_positive();
     scene.steps = t.at("steps").as_int_at_least(1);
     if (const auto x = t.find("max_attempts")) scene.max_attempts = x->as_int_at_least(0);
     if (const auto x = t.find("max_wall_seconds")) scene.max_wall_seconds = x->as_number_in(0, 1e12);
-    if (const auto x = t.find("adaptive")) scene.adaptive = read_adaptive_steps(*x, scene.end_time);
+    if (const auto x = t.find("error_estimate")) {
+      const std::string e = x->as_string();
+      require(e == "linearised" || e == "summed" || e == "none", "scene: '", x->path(),
+              "' must be linearised (the default), summed or none, got '", e, "'");
+      scene.estimate_time_error = e != "none";
+      if (e == "summed") scene.time_error_propagation = TimeErrorPropagation::Summed;
+    }
+    if (const auto x = t.find("adaptive")) {
+      scene.adaptive = read_adaptive_steps(*x, scene.end_time);
+      require(scene.estimate_time_error, "scene: '", x->path(), "' needs the time error estimate, which "
+              "time.error_estimate = none turns off");
+    }
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     const std::string p = t.contains("prediction") ? t.at("prediction").as_string() : "previous";

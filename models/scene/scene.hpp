@@ -84,6 +84,9 @@ struct Scene {
   // time.adaptive: a tolerance, or {"tolerance", "max_step", "factorization_cost"}; time.steps then sets
   // the first step (StepperOptions::adaptive).
   std::optional<AdaptiveSteps> adaptive;
+  // time.error_estimate: "linearised" (the default), "summed" or "none" (models/time_error_estimate.hpp).
+  bool estimate_time_error = true;
+  TimeErrorPropagation time_error_propagation = TimeErrorPropagation::Linearised;
   int threads = 0;                // solver.threads: of the element loops and products (0: assembly/threads.hpp's default)
   SceneOutput output;
 };

@@ -215,13 +215,6 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
   write_finite_csv(dir + "/final_cells.csv", {"n0", "n1", "n2", "von_mises", "phi_mean"}, cell_rows);
 }
 
-// A field's estimated global time error in a step's report (0 where the step has none).
-double global_time_error(const TimeErrorReport& report, const std::string& field) {
-  for (const FieldTimeError& f : report.fields)
-    if (f.field == field) return f.global;
-  return 0;
-}
-
 // The stepper's counts without the time error estimate's history (vectors of the mesh's size), which a
 // copy per step would not afford.
 StepperState counts_of(const StepperState& s) {
@@ -444,6 +437,8 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   options.max_attempts = scene.max_attempts;
   options.max_wall_seconds = scene.max_wall_seconds;
   options.adaptive = scene.adaptive;
+  options.estimate_time_error = scene.estimate_time_error;
+  options.time_error_propagation = scene.time_error_propagation;
   options.checkpoint_every = dir.empty() ? 0 : scene.output.checkpoint_every;  // the writer's callback writes
   options.stop_requested = [] { return std::string(interrupt_reason() ? interrupt_reason() : ""); };
   const PointLocator locator(mesh);
@@ -453,7 +448,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   std::vector<std::string> history_header = history_columns(dim);
   // The step size and the time error estimate (models/time_error_estimate.hpp): the step's local error and
   // each field's estimated global error, relative.
-  const std::vector<std::string> error_fields = TimeErrorEstimator::default_fields(m, *built.scheme);
+  const std::vector<std::string> error_fields =
+      scene.estimate_time_error ? TimeErrorEstimator::default_fields(m, *built.scheme, scene.time_error_propagation)
+                                : std::vector<std::string>{};
   history_header.insert(history_header.end(), {"dt", "err_time_step"});
   for (const std::string& f : error_fields) history_header.push_back("err_time_" + f);
   for (const std::string& column : electrodes.columns()) history_header.push_back(column);
@@ -616,7 +613,10 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     timed_output([&] {
       std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
       row.insert(row.end(), {r.dt, r.time_error.max_local()});
-      for (const std::string& f : error_fields) row.push_back(global_time_error(r.time_error, f));
+      for (const std::string& f : error_fields) {
+        const FieldTimeError* e = r.time_error.field(f);
+        row.push_back(e ? e->global : 0.0);
+      }
       for (const ElectrodeReading& e : electrodes.read(model)) row.insert(row.end(), {e.voltage, e.charge, e.current});
       if (contact) {
         const ContactResultant resultant = contact_resultant(built);

@@ -106,18 +106,18 @@ LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
   return chosen_;
 }
 
-Eigen::VectorXd NewtonSolver::step(NonlinearProblem& problem, NewtonReport& report) {
+Eigen::VectorXd NewtonSolver::step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report) {
   const LinearStrategy strategy = strategy_for(problem);
   report.strategy = strategy;
   if (strategy == LinearStrategy::Krylov) {
-    KrylovStep krylov = krylov_.step(problem, -problem.residual());
+    KrylovStep krylov = krylov_.step(problem, rhs);
     report += krylov.cost;
     report.condensed = true;
     report.krylov_iterations += krylov.iterations;
     return std::move(krylov.dx);
   }
   if (strategy != LinearStrategy::Full) {
-    CondensedStep condensed = condensed_.step(problem, -problem.residual());
+    CondensedStep condensed = condensed_.step(problem, rhs);
     report += condensed.cost;
     report.condensed = condensed.dx.has_value();
     if (condensed.dx) return std::move(*condensed.dx);
@@ -126,10 +126,17 @@ Eigen::VectorXd NewtonSolver::step(NonlinearProblem& problem, NewtonReport& repo
     // solver's message.
     report.strategy = LinearStrategy::Full;
   }
-  return full_step(problem, report);
+  return full_step(problem, rhs, report);
 }
 
-Eigen::VectorXd NewtonSolver::full_step(NonlinearProblem& problem, NewtonReport& report) {
+Eigen::VectorXd NewtonSolver::solve_tangent(NonlinearProblem& problem, const Eigen::VectorXd& rhs, LinearSolveCost& cost) {
+  NewtonReport report;
+  Eigen::VectorXd dx = step(problem, rhs, report);
+  cost += report;
+  return dx;
+}
+
+Eigen::VectorXd NewtonSolver::full_step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report) {
   const CsrMatrix& J = problem.jacobian();
   if (analyzed_matrix_ != &J || analyzed_nonzeros_ != J.nonZeros()) {
     const auto t = Clock::now();
@@ -144,7 +151,7 @@ Eigen::VectorXd NewtonSolver::full_step(NonlinearProblem& problem, NewtonReport&
   report.factorize_seconds += seconds_since(t);
   ++report.factorizations;
   t = Clock::now();
-  Eigen::VectorXd dx = linear_->solve(-problem.residual());
+  Eigen::VectorXd dx = linear_->solve(rhs);
   report.solve_seconds += seconds_since(t);
   return dx;
 }
@@ -266,7 +273,7 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
     }
     Eigen::VectorXd dx;
     try {
-      dx = step(problem, report);
+      dx = step(problem, -problem.residual(), report);
     } catch (const Error& e) {
       return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": ", e.what()));
     }

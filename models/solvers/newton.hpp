@@ -123,6 +123,10 @@ class NewtonSolver {
   // What the solver of full factorisations predicted at its last analysis (zeros before one, and while the
   // condensed or Krylov paths solve without it).
   FactorEstimate full_factor_estimate() const { return linear_->factor_estimate(); }
+  // Solves J dx = rhs with the problem's tangent at its last assembly, by the path the last solve took
+  // (the condensed and Krylov paths reuse what they keep; the full path factorises J again): what the
+  // time error estimate propagates the error with.
+  Eigen::VectorXd solve_tangent(NonlinearProblem& problem, const Eigen::VectorXd& rhs, LinearSolveCost& cost);
   // Called after every iteration with the report so far (its history's last entry is the iteration):
   // progress for a long solve.
   void set_iteration_callback(std::function<void(const NewtonReport&)> on_iteration) {
@@ -130,10 +134,10 @@ class NewtonSolver {
   }
 
  private:
-  // One Newton step dx with J dx = -R: through the condensed system where it applies, else by a full
+  // J dx = rhs (a Newton step: rhs = -R): through the condensed system where it applies, else by a full
   // factorisation.
-  Eigen::VectorXd step(NonlinearProblem& problem, NewtonReport& report);
-  Eigen::VectorXd full_step(NonlinearProblem& problem, NewtonReport& report);
+  Eigen::VectorXd step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
+  Eigen::VectorXd full_step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
 
   NewtonOptions options_;
   std::function<void(const NewtonReport&)> on_iteration_;

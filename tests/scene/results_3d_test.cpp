@@ -142,7 +142,7 @@ TEST_F(Results3D, HistoryHasUzAtTheCorner) {
   run(kBox, kCoarseBox, "conductive");
   const Table history = read_csv(directory_ / "history.csv");
   EXPECT_EQ(history.columns, (std::vector<std::string>{"t", "uy_corner", "uz_corner", "phi_center", "newton_iterations",
-                                                       "dt", "err_time_step", "err_time_u", "err_time_v", "contact_fx",
+                                                       "dt", "err_time_step", "err_time_u", "err_time_v", "err_time_phi", "contact_fx",
                                                        "contact_fy", "contact_fz", "contact_power", "E_kinetic",
                                                        "E_elastic", "E_electric", "W_numerical", "W_viscous", "W_contact",
                                                        "W_coupling", "W_other", "W_external", "W_boundary", "E_balance"}));
@@ -195,7 +195,7 @@ TEST_F(Results3D, A2DRunKeepsItsColumnsAndKeysAndDescribesItsMesh) {
             (std::vector<std::string>{"x", "y", "ux", "uy", "vx", "vy", "phi"}));
   EXPECT_EQ(read_csv(directory_ / "history.csv").columns,
             (std::vector<std::string>{"t", "uy_corner", "phi_center", "newton_iterations", "dt", "err_time_step",
-                                      "err_time_u", "err_time_v", "contact_fx", "contact_fy",
+                                      "err_time_u", "err_time_v", "err_time_phi", "contact_fx", "contact_fy",
                                       "contact_power", "E_kinetic", "E_elastic", "E_electric", "W_numerical",
                                       "W_viscous", "W_contact", "W_coupling", "W_other", "W_external", "W_boundary",
                                       "E_balance"}));
