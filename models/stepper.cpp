@@ -84,7 +84,10 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
   RunSummary summary;
   const StepperOptions& o = options_;
   std::optional<TimeErrorEstimator> estimator;
-  if (o.estimate_time_error) estimator.emplace(model, scheme, o.time_error_propagation, o.time_error_fields);
+  if (o.estimate_time_error) {
+    estimator.emplace(model, scheme, o.time_error_propagation, o.time_error_fields);
+    estimator->set_filter_local_errors(o.adaptive.has_value());
+  }
   // The linearised estimate's solves, with the tangent of the step just solved; their cost is the step's.
   LinearSolveCost estimate_cost;
   const TimeErrorEstimator::TangentSolve tangent_solve = [&](const Eigen::VectorXd& rhs) {

@@ -252,19 +252,32 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
     }
     return delta;
   };
-  const FieldVectors from_history = response(carried), from_step = response(injected);
+  // The step's own response is needed apart only for a filtered local error (the step size controller's);
+  // otherwise one perturbation, the sum, gives the error (the response is linear in it).
+  FieldVectors from_history, from_step;
+  if (filter_local_errors_) {
+    from_history = response(carried);
+    from_step = response(injected);
+  } else {
+    for (auto& [h, p] : carried) p += injected.at(h);
+    from_history = response(carried);
+    for (const auto& [f, d] : from_history) from_step[f] = Eigen::VectorXd::Zero(d.size());
+  }
   model.assemble(false);  // the converged residual again, for what reads it after the step
 
   Propagated out;
   for (const std::string& f : fields_) {
     out.error[f] = from_history.at(f) + from_step.at(f);
-    out.local[f] = from_step.at(f);
+    out.local[f] = filter_local_errors_ ? from_step.at(f)
+                   : local.count(f)     ? local.at(f)
+                                        : Eigen::VectorXd::Zero(from_step.at(f).size());
   }
   // The history shifts as the scheme's does: X_prev2 takes X_prev's error, X_prev takes X_n's.
   for (const std::string& h : history_fields) {
     if (h.ends_with("_prev2")) {
       const std::string last = h.substr(0, h.size() - 1);
-      out.history_errors[h] = carried.count(last) ? carried.at(last) : Eigen::VectorXd::Zero(model.values(h).size());
+      out.history_errors[h] = history.history_errors.count(last) ? history.history_errors.at(last)
+                                                                : Eigen::VectorXd::Zero(model.values(h).size());
     } else if (h.ends_with("_prev")) {
       const std::string x = h.substr(0, h.size() - 5);
       out.history_errors[h] = from_history.count(x) ? Eigen::VectorXd(from_history.at(x) + from_step.at(x))

@@ -14,8 +14,9 @@
 //    solve with the tangent Newton has (NewtonSolver::solve_tangent) for each. What a damped mode forgets
 //    is forgotten, stiff modes (a contact damper's, a fast viscous one's) are filtered out of the local
 //    error as in Shampine's filtered estimates, and the algebraic fields (the potential, the velocity of a
-//    model without inertia) get their induced error. Cost: two residual assemblies and two solves, plus
-//    one assembly to restore the converged residual, per step.
+//    model without inertia) get their induced error. Cost per step: one residual difference and one solve
+//    (two of each with the filtered local error adaptive steps need), and one assembly to restore the
+//    converged residual.
 //  - Summed: the local errors added up, as vectors, for the integrated fields only: no solve, but an
 //    overestimate where the dynamics damp the error (many times over on a stiff contact scene) and
 //    nothing for the algebraic fields.
@@ -83,6 +84,10 @@ class TimeErrorEstimator {
                      std::vector<std::string> fields = {});
   const std::vector<std::string>& fields() const { return fields_; }
   TimeErrorPropagation propagation() const { return propagation_; }
+  // Linearised: whether the reported local error is the step's own filtered response (one more residual
+  // difference and solve per step; what adaptive steps control) or, by default, the raw local error of the
+  // integrated fields (0 for the algebraic ones).
+  void set_filter_local_errors(bool filter) { filter_local_errors_ = filter; }
   // The displacement, the velocity with inertia and, linearised, every other unknown no brick brought
   // (a brick's multiplier is left out).
   static std::vector<std::string> default_fields(const Model& model, const TimeScheme& scheme,
@@ -109,6 +114,7 @@ class TimeErrorEstimator {
                        const TimeErrorHistory& history, const TangentSolve& solve) const;
 
   TimeErrorPropagation propagation_;
+  bool filter_local_errors_ = false;
   KinematicFields kinematics_;
   std::vector<std::string> fields_;      // reported
   std::vector<std::string> integrated_;  // with a local error of their own: u, and v with inertia
