@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <mutex>
+#include <vector>
 
 #include "assembly/error.hpp"
 
@@ -22,11 +23,13 @@ void reserve_blas_workspace() {
       throw OutOfMemory("out of memory while reserving the BLAS's work buffer (128 MiB), before the model is built: "
                         "free memory, or raise the process's limit (ulimit -v)");
     std::free(probe);
-    // Large enough that no small-matrix shortcut of the BLAS skips its buffer.
-    constexpr int n = 64;
-    static double a[n * n], b[n * n], c[n * n];
+    // Large enough that no small-matrix shortcut of the BLAS skips its buffer: OpenBLAS 0.3.21 takes one
+    // below 100^3 multiply-adds on CPUs with its small-matrix kernels (AVX-512), and a 64^3 product
+    // reserved nothing there, so the first factorisation under a memory limit hung in the retry.
+    constexpr int n = 256;
+    std::vector<double> a(n * n, 0.0), b(n * n, 0.0), c(n * n, 0.0);
     const double one = 1, zero = 0;
-    dgemm_("N", "N", &n, &n, &n, &one, a, &n, b, &n, &zero, c, &n);
+    dgemm_("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
   });
 }
 
