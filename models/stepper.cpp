@@ -1,8 +1,8 @@
 #include "models/stepper.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <algorithm>
 #include <map>
 #include <optional>
 
@@ -127,8 +127,7 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
     });
   }
 
-  const double span = o.end - o.start;
-  const double tiny = 1e-12 * span;
+  const double tiny = 1e-12 * (o.end - o.start);
   double& t = state.time;
   double& dt = state.step_size;
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -194,7 +193,7 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       report.assembly_seconds += std::max(0.0, seconds - (estimate_cost.analyze_seconds + estimate_cost.factorize_seconds +
                                                           estimate_cost.solve_seconds + estimate_cost.condensation_seconds));
     }
-    double ratio = 0;  // adaptive: the step's error over its allowance
+    double ratio = 0;  // adaptive: the step's error over the tolerance
     if (o.adaptive && estimate->report.estimated) {
       const AdaptiveSteps& a = *o.adaptive;
       ratio = error_ratio(estimate->report, a, o.time_error_propagation, scheme.fields().displacement);

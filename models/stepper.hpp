@@ -37,9 +37,10 @@ struct StepperState {
   TimeErrorHistory time_error;
 };
 
-// Adaptive time steps: a PI controller (Gustafsson's) on the estimated local error, per unit step: a step
-// of size k is accepted when its local error is at most tolerance * k / (end - start), so that the local
-// errors of a run add up to at most `tolerance`. The error controlled is the largest of the reported
+// Adaptive time steps: a PI controller (Gustafsson's) on the estimated local error per step: a step is
+// accepted when its relative local error is at most `tolerance` (per step, as CVODE and DASSL control it:
+// a tolerance per unit step would chase every contact event's kink down to min_step, since a kink's local
+// error does not shrink with k; the run's global error is reported beside it). The error controlled is the largest of the reported
 // fields' under the linearised estimate (filtered: stiff modes do not shrink the step), the displacement's
 // under the summed one (whose raw velocity error would chase the stiff modes); a step above it is rejected and retried smaller. The
 // step grows at most by max_growth a step (BDF2 stays zero-stable) and only when the steps a larger size

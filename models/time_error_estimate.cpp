@@ -125,14 +125,14 @@ TimeErrorStep TimeErrorEstimator::evaluate(Model& model, LocalErrorTerm term, co
   step.time = model.time();
   std::vector<double> times{step.time};
   times.insert(times.end(), history.times.begin(), history.times.end());
-  // Which error terms this step can evaluate: its own, and those of earlier steps still waiting.
-  std::vector<LocalErrorTerm> waiting = history.pending;
-  if (term.order > 0) waiting.push_back(term);
+  // Which error terms this step can evaluate: its own, and those of earlier steps still waiting (the
+  // ones it cannot wait on, its own included).
   const auto available = [&](const LocalErrorTerm& t) { return times.size() >= size_t(t.order + 2); };
   step.report.estimated = term.order > 0 && available(term);
   step.report.order = step.report.estimated ? term.order : 0;
-  for (const LocalErrorTerm& t : waiting)
+  for (const LocalErrorTerm& t : history.pending)
     if (!available(t)) step.pending.push_back(t);
+  if (term.order > 0 && !step.report.estimated) step.pending.push_back(term);
 
   // Each integrated field's local error: this step's, and the back-filled one of steps still waiting.
   std::map<std::string, Eigen::VectorXd> local, backfilled;
@@ -143,14 +143,14 @@ TimeErrorStep TimeErrorEstimator::evaluate(Model& model, LocalErrorTerm term, co
     std::map<int, Eigen::VectorXd> derivatives;  // by order of the derivative
     backfilled[f] = Eigen::VectorXd::Zero(y.size());
     local[f] = Eigen::VectorXd::Zero(y.size());
-    for (const LocalErrorTerm& t : waiting) {
-      if (!available(t)) continue;
-      const int q = t.order + 1;
+    const auto derivative_of_order = [&](int q) -> const Eigen::VectorXd& {
       if (!derivatives.count(q)) derivatives[q] = *derivative(q, times, values);
-      if (&t != &waiting.back() || !step.report.estimated) backfilled[f] += t.constant * derivatives[q];
-    }
+      return derivatives[q];
+    };
+    for (const LocalErrorTerm& t : history.pending)
+      if (available(t)) backfilled[f] += t.constant * derivative_of_order(t.order + 1);
     if (step.report.estimated)
-      local[f] = history_correction(term, times) * term.constant * derivatives.at(term.order + 1);
+      local[f] = history_correction(term, times) * term.constant * derivative_of_order(term.order + 1);
   }
 
   std::map<std::string, Eigen::VectorXd> error, shown_local;
