@@ -1,8 +1,8 @@
 // The runner of the MPI build as a user launches it, `mpirun -np N piezocontact run SCENE`, against the same
 // runner on one process: every output field (each VTU array at every output step, each CSV column)
 // equal to 1e-10 of its size over the run (see expect_same_results for the one field the serial code
-// resolves more coarsely), the same Newton iterations, and the solvers that cannot take a distributed
-// matrix refused or replaced with a reason.
+// resolves more coarsely, and relative_tolerance for the time error estimates), the same Newton
+// iterations, and the solvers that cannot take a distributed matrix refused or replaced with a reason.
 //
 // "Its size over the run": a field's largest magnitude in any output step. A field's value near rest
 // (the final velocity, 1e-5 of its size during the transient) is a difference of nearly equal numbers,
@@ -33,6 +33,17 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr double kRelativeTolerance = 1e-10;
+
+// The time error estimates (`err_time_*`) are read off a finite difference of the residual with a relative
+// step of 1e-7: round-off in the residual (1e-16 of its size) enters them at some 1e-9 of their size in each
+// step, and they accumulate over the run. Two runs whose solutions agree to 1e-10 (a factorisation reused
+// in one run and fresh in the other, or distributed against serial) give estimates that agree to 1e-7; the
+// estimate is an estimate, and its first digits are what a user reads.
+constexpr double kEstimateTolerance = 1e-5;
+
+double relative_tolerance(const std::string& field) {
+  return field.rfind("column err_time_", 0) == 0 ? kEstimateTolerance : kRelativeTolerance;
+}
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -232,7 +243,7 @@ void expect_same_results(const fs::path& serial, const fs::path& distributed, co
   for (const auto& [field, s] : compare_runs(serial, distributed)) {
     const auto other = serial_spread.find(field);
     const double resolution = other == serial_spread.end() ? 0.0 : 4 * other->second.difference;
-    EXPECT_LE(s.difference, std::max(kRelativeTolerance * s.size, resolution))
+    EXPECT_LE(s.difference, std::max(relative_tolerance(field) * s.size, resolution))
         << field << ": differs by " << s.difference << ", size " << s.size << " (" << s.difference / s.size
         << " relative; two serial routes differ by " << resolution / 4 << ")";
   }
@@ -330,7 +341,7 @@ TEST_F(DistributedRuns, AStoppedRunResumesToTheResultsOfAnUninterruptedOne) {
   const Outcome resumed = run(2, scene + stopped.string() + " --resume");
   ASSERT_EQ(resumed.status, 0) << resumed.log;
   for (const auto& [field, s] : compare_runs(whole, stopped))
-    EXPECT_LE(s.difference, kRelativeTolerance * s.size) << field << ": differs by " << s.difference << ", size " << s.size;
+    EXPECT_LE(s.difference, relative_tolerance(field) * s.size) << field << ": differs by " << s.difference << ", size " << s.size;
   const std::string manifest = read_text(stopped / "manifest.json");
   EXPECT_NE(manifest.find("\"resumes\": 1"), std::string::npos) << manifest;
   EXPECT_NE(manifest.find("\"state\": \"completed\""), std::string::npos) << manifest;
