@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include <Eigen/LU>
+
 #include "assembly/cell_geometry.hpp"
 #include "assembly/error.hpp"
 
@@ -130,6 +132,25 @@ void FESpace::evaluate_in_cell(const Eigen::VectorXd& coefficients, int cell, co
     out[c] = 0;
     for (int i = 0; i < int(dofs.size()); ++i) out[c] += N[i] * coefficients[dof(dofs[i], c)];
   }
+}
+
+void FESpace::gradient_in_cell(const Eigen::VectorXd& coefficients, int cell, const double* xi, double* out) const {
+  require(coefficients.size() == num_dofs(), "FESpace: coefficient vector has ", coefficients.size(),
+          " entries, the space has ", num_dofs(), " dofs");
+  const int dim = mesh_->dim();
+  double J[9], dN[27 * 3];
+  cell_jacobian(*mesh_, cell, xi, J);
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3>> jacobian(J, dim, dim);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3> inverse = jacobian.inverse();
+  element_->gradients(xi, dN);
+  const auto dofs = cell_scalar_dofs(cell);
+  for (int c = 0; c < num_components_; ++c)
+    for (int d = 0; d < dim; ++d) {
+      double g = 0;  // d f / d x_d = sum_j d f / d xi_j * d xi_j / d x_d
+      for (int i = 0; i < int(dofs.size()); ++i)
+        for (int j = 0; j < dim; ++j) g += coefficients[dof(dofs[i], c)] * dN[i * dim + j] * inverse(j, d);
+      out[c * dim + d] = g;
+    }
 }
 
 }  // namespace pc

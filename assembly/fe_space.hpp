@@ -47,6 +47,8 @@ class FESpace {
 
   // Values of the field with these coefficients at a cell's reference point (num_components values).
   void evaluate_in_cell(const Eigen::VectorXd& coefficients, int cell, const double* xi, double* out) const;
+  // Physical gradient of every component there: out[c * dim + d] = d f_c / d x_d.
+  void gradient_in_cell(const Eigen::VectorXd& coefficients, int cell, const double* xi, double* out) const;
 
  private:
   std::shared_ptr<const Mesh> mesh_;

@@ -241,7 +241,8 @@ std::vector<std::string> read_vtu_fields(const Json& list, bool electric) {
 const std::vector<SceneVtuField>& scene_vtu_fields() {
   static const std::vector<SceneVtuField> fields = {
       {"v", false}, {"u", false}, {"phi", true}, {"contact_pressure", false}, {"contact_state", false}, {"strain", false},
-      {"stress", false}, {"von_mises", false}, {"electric_field", true}, {"electric_displacement", true}};
+      {"stress", false}, {"von_mises", false}, {"electric_field", true}, {"electric_displacement", true},
+      {"space_error", false}};
   return fields;
 }
 

@@ -34,6 +34,7 @@
 #include "models/piezo/electrodes.hpp"
 #include "models/piezo/energy_books.hpp"
 #include "models/piezo/initial_potential.hpp"
+#include "models/piezo/piezo_space_error.hpp"
 
 namespace pc {
 namespace {
@@ -279,6 +280,15 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   }
   s.set("time_error", std::move(time_error));
   s.set("time_error_max", finite_or_null(time_error_max));
+  // The estimated spatial error of the final state (relative, in each field's energy norm).
+  Json space_error = Json::object();
+  double space_error_max = 0;
+  for (const auto& [field, relative] : r.space_error) {
+    space_error.set(field, finite_or_null(relative));
+    space_error_max = std::max(space_error_max, relative);
+  }
+  s.set("space_error", std::move(space_error));
+  s.set("space_error_max", finite_or_null(space_error_max));
   if (scene.adaptive) {
     Json adaptive = Json::object();
     adaptive.set("tolerance", Json(scene.adaptive->tolerance));
@@ -663,6 +673,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
         writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
       if (out.writes_vtu_field("contact_state"))
         writer.add_point_data("contact_state", 1, contact_state_on_mesh_nodes(built, out.slip_threshold));
+      if (out.writes_vtu_field("space_error"))
+        for (SpaceErrorField& f : piezo_space_error(model).fields)
+          writer.add_cell_data("space_error_" + f.field, 1, std::move(f.cells));
       const std::string bad = writer.non_finite_array();
       require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
       series->write(r.step, r.time, writer);
@@ -740,6 +753,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     result.n_slip_nodes = int(diagnostics.at("contact_nodes_in_slip"));
     result.n_contact_nodes = int(diagnostics.at("contact_nodes_in_compression"));
   }
+  // The final state's spatial error; a state stopped mid-step has none.
+  if (!stopped_in_callback)
+    for (const SpaceErrorField& f : piezo_space_error(m).fields) result.space_error[f.field] = f.relative();
   // The final tables hold the final state, unless that is where a non-finite value appeared.
   if (!stopped_in_callback) {
     try {

@@ -1,0 +1,54 @@
+#pragma once
+// The spatial discretisation's error, estimated a posteriori by gradient recovery (Zienkiewicz and Zhu,
+// 1987): the finite-element gradient is discontinuous between cells, the true one is not, so a
+// continuous gradient recovered from the discrete one is closer to the truth than the discrete one, and
+// their difference measures the error.
+//
+// Recovery: at every Lagrange node, the average of the gradients the node's cells give there, weighted
+// by the cells' measures; the recovered gradient is the interpolant of these nodal values in the field's
+// own space. Indicator of a cell K, in the energy norm of a weight W (the elasticity for a displacement's
+// strain, the permittivity for a potential's gradient):
+//     eta_K^2 = int_K (q(G*) - q(G_h))^T W (q(G*) - q(G_h)) dx,   q the strain or the gradient itself,
+// and the field's estimate eta = sqrt(sum_K eta_K^2), relative to its norm ||q(G_h)||_W.
+//
+// What it can and cannot see: for P1 on a mesh that is locally regular, the recovered gradient is
+// superconvergent and eta is asymptotically exact (effectivity eta / true error -> 1); for P2 nodal
+// averaging is not superconvergent, and eta underestimates (effectivity 0.6 on the manufactured
+// solution of tests/models/space_error_test.cpp, at every mesh size): an indicator of where, not a
+// bound. Across an interface of two materials the true gradient jumps, the recovered one does not, and
+// eta overestimates there. It estimates the error of the fields at one time, not the time error
+// (models/time_error_estimate.hpp).
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "assembly/fe_space.hpp"
+
+namespace pc {
+
+// How a field's gradient enters the norm: its symmetric part in Voigt form (a displacement or velocity:
+// W is voigt_size(dim) square), or the gradient itself (each component's: W is dim square).
+enum class GradientMeasure { Strain, Gradient };
+
+struct SpaceErrorField {
+  std::string field;
+  std::vector<double> cells;  // eta_K for every mesh cell, 0 outside the field's space
+  double estimate = 0;        // sqrt(sum_K eta_K^2)
+  double norm = 0;            // ||q(G_h)||_W, what the estimate is relative to
+  double relative() const { return norm > 0 ? estimate / norm : 0.0; }
+};
+
+// The recovery estimate of one field. Throws if W is not the size the measure needs, if the measure is
+// Strain and the field has not dim components, or if the coefficients do not fit the space.
+SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace& space,
+                                        const Eigen::VectorXd& coefficients, GradientMeasure measure,
+                                        const Eigen::MatrixXd& weight);
+
+struct SpaceErrorEstimate {
+  std::vector<SpaceErrorField> fields;
+  const SpaceErrorField* field(const std::string& name) const;
+  double max_relative() const;
+};
+
+}  // namespace pc

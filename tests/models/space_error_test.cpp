@@ -1,0 +1,167 @@
+// The spatial error estimate by gradient recovery (models/space_error_estimate.hpp):
+//  - it vanishes for a field the space holds exactly (a linear field in P1, a quadratic in P2), on a
+//    distorted mesh: the recovery reproduces what is already continuous;
+//  - on the static piezoelectric manufactured solution, its effectivity (estimate / true error, each in
+//    the field's energy norm: the strain in B, the potential's gradient in beta) tends to 1 for P1, where
+//    the recovered gradient is superconvergent, stays within [0.5, 0.9] for P2, and the estimate converges
+//    at the true error's rate;
+//  - bad weights and fields are refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "assembly/mesh_generators.hpp"
+#include "assembly/region_geometry.hpp"
+#include "bricks/voigt.hpp"
+#include "models/piezo/piezo_space_error.hpp"
+#include "models/solvers/newton.hpp"
+#include "models/space_error_estimate.hpp"
+#include "models/stepper.hpp"
+#include "support/error_and_temp_dir.hpp"
+#include "support/piezo_mms.hpp"
+
+namespace pc {
+namespace {
+
+using testing::PiezoMmsExact;
+using testing::PiezoMmsPhysics;
+using testing::TimeProfile;
+
+// A unit square of n x n cells whose interior nodes are moved by up to a fifth of a cell.
+std::shared_ptr<const Mesh> distorted_square(int n) {
+  const Mesh regular = rectangle_mesh({0, 0}, {1, 1}, n, n, Shape::Triangle);
+  std::vector<double> x = regular.coordinates();
+  for (int i = 0; i < regular.num_nodes(); ++i) {
+    double* p = x.data() + 2 * i;
+    const bool interior = p[0] > 1e-12 && p[0] < 1 - 1e-12 && p[1] > 1e-12 && p[1] < 1 - 1e-12;
+    if (interior) {
+      p[0] += 0.2 / n * std::sin(12.9898 * i);
+      p[1] += 0.2 / n * std::cos(78.233 * i);
+    }
+  }
+  return std::make_shared<const Mesh>(2, Shape::Triangle, std::move(x), regular.connectivity());
+}
+
+TEST(RecoveryEstimate, VanishesForAFieldTheSpaceHoldsExactly) {
+  const auto mesh = distorted_square(6);
+  const PiezoMmsExact exact;
+  for (int order : {1, 2}) {
+    const FESpace vector_space(mesh, order, 2), scalar_space(mesh, order, 1);
+    // Of the space's degree: its gradient is continuous already, and of a degree the space interpolates.
+    const Eigen::VectorXd u = vector_space.interpolate([&](const double* x, double* out) {
+      out[0] = 0.3 * x[0] - 0.2 * x[1] + (order == 2 ? 0.7 * x[0] * x[1] : 0.0);
+      out[1] = 0.1 + 0.5 * x[1] + (order == 2 ? -0.4 * x[0] * x[0] : 0.0);
+    });
+    const Eigen::VectorXd phi =
+        scalar_space.interpolate([&](const double* x, double* out) { out[0] = x[0] - 2 * x[1] + (order == 2 ? x[1] * x[1] : 0.0); });
+    const SpaceErrorField eu = recovery_error_estimate("u", vector_space, u, GradientMeasure::Strain, exact.m.B);
+    const SpaceErrorField ephi = recovery_error_estimate("phi", scalar_space, phi, GradientMeasure::Gradient, exact.m.beta);
+    EXPECT_GT(eu.norm, 0.1) << "P" << order;
+    EXPECT_LT(eu.relative(), 1e-12) << "P" << order;
+    EXPECT_LT(ephi.relative(), 1e-12) << "P" << order;
+  }
+}
+
+// || q(grad f_h) - q(g) ||_W over the space's mesh, q the strain or the gradient: the true error in a
+// field's energy norm when g is the exact gradient.
+double energy_difference(const FESpace& space, const Eigen::VectorXd& f, const PointGradient& g,
+                         GradientMeasure measure, const Eigen::MatrixXd& W) {
+  const RegionGeometry geometry(space.mesh(), "all", 2 * space.order() + 4);
+  const int dim = space.mesh().dim(), width = space.num_components() * dim;
+  std::vector<double> gh(width), ge(width), qh(6), qe(6);
+  double sum = 0;
+  for (int e = 0; e < geometry.num_elements(); ++e)
+    for (int q = 0; q < geometry.num_points(); ++q) {
+      space.gradient_in_cell(f, geometry.cell(e), geometry.reference_points(-1)[q].data(), gh.data());
+      g(geometry.point(e, q).data(), ge.data());
+      if (measure == GradientMeasure::Strain) {
+        strain_from_gradient(dim, gh.data(), qh.data());
+        strain_from_gradient(dim, ge.data(), qe.data());
+      } else {
+        qh = gh;
+        qe = ge;
+      }
+      const Eigen::VectorXd difference = Eigen::Map<Eigen::VectorXd>(qh.data(), W.rows()) -
+                                         Eigen::Map<Eigen::VectorXd>(qe.data(), W.rows());
+      sum += geometry.weight(e, q) * difference.dot(W * difference);
+    }
+  return std::sqrt(sum);
+}
+
+class RecoveryEstimateOnTheManufacturedSolution : public ::testing::TestWithParam<int> {};
+
+TEST_P(RecoveryEstimateOnTheManufacturedSolution, MatchesTheTrueErrorAndItsRate) {
+  const int order = GetParam();
+  const PiezoMmsExact exact;
+  const TimeProfile constant{[](double) { return 1.0; }, [](double) { return 1.0; }, [](double) { return 0.0; }};
+  const auto grad_u = [&](const double* x, double* out) {
+    for (int i = 0; i < 2; ++i)
+      for (int d = 0; d < 2; ++d) out[i * 2 + d] = exact.U[i] * exact.s.gradient(x, d);
+  };
+  const auto grad_phi = [&](const double* x, double* out) {
+    for (int d = 0; d < 2; ++d) out[d] = exact.P * exact.s.gradient(x, d);
+  };
+  const std::vector<int> sizes = order == 1 ? std::vector<int>{8, 16, 32, 64} : std::vector<int>{4, 8, 16, 32};
+  std::vector<double> estimate_u, true_u, estimate_phi, true_phi;
+  for (int n : sizes) {
+    auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, n, n, Shape::Triangle));
+    auto s = testing::build_piezo_mms_problem(mesh, order, exact, PiezoMmsPhysics{}, std::make_unique<BackwardEuler>(),
+                                              constant);
+    StepperOptions options;  // one backward Euler step of size 1 from u = 0: the static problem, u = v
+    options.start = 0;
+    options.end = 1;
+    options.step = 1;
+    NewtonSolver newton;
+    ASSERT_TRUE(Stepper(options).run(*s.model, *s.scheme, newton).completed);
+    const Model& m = *s.model;
+    const SpaceErrorEstimate estimate = piezo_space_error(m);
+    ASSERT_NE(estimate.field("u"), nullptr);
+    ASSERT_NE(estimate.field("phi"), nullptr);
+    EXPECT_EQ(estimate.field("v"), nullptr) << "no viscosity, no estimate of v";
+    estimate_u.push_back(estimate.field("u")->estimate);
+    estimate_phi.push_back(estimate.field("phi")->estimate);
+    true_u.push_back(energy_difference(m.space("u"), m.values("u"), grad_u, GradientMeasure::Strain, exact.m.B));
+    true_phi.push_back(energy_difference(m.space("phi"), m.values("phi"), grad_phi, GradientMeasure::Gradient, exact.m.beta));
+    std::printf("P%d n=%d: u estimate %.4e true %.4e (effectivity %.3f), phi estimate %.4e true %.4e (%.3f)\n",
+                order, n, estimate_u.back(), true_u.back(), estimate_u.back() / true_u.back(), estimate_phi.back(),
+                true_phi.back(), estimate_phi.back() / true_phi.back());
+  }
+  const size_t last = sizes.size() - 1;
+  // Measured: P1 0.999 (u) and 1.002 (phi) at n = 64; P2 0.64 and 0.59 at every n, nodal averaging
+  // recovering a P2 gradient no better than to its own order.
+  const double lo = order == 1 ? 0.98 : 0.5, hi = order == 1 ? 1.02 : 0.9;
+  EXPECT_GT(estimate_u[last] / true_u[last], lo);
+  EXPECT_LT(estimate_u[last] / true_u[last], hi);
+  EXPECT_GT(estimate_phi[last] / true_phi[last], lo);
+  EXPECT_LT(estimate_phi[last] / true_phi[last], hi);
+  const auto rate = [](const std::vector<double>& e, size_t k) { return std::log2(e[k - 1] / e[k]); };
+  EXPECT_NEAR(rate(estimate_u, last), rate(true_u, last), 0.15);
+  EXPECT_NEAR(rate(estimate_phi, last), rate(true_phi, last), 0.15);
+  EXPECT_NEAR(rate(true_u, last), order, 0.15);
+  if (order == 1) {  // asymptotically exact: the effectivity closes in on 1 as the mesh is refined
+    EXPECT_LT(std::abs(estimate_u[last] / true_u[last] - 1), std::abs(estimate_u[0] / true_u[0] - 1) + 1e-3);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Orders, RecoveryEstimateOnTheManufacturedSolution, ::testing::Values(1, 2));
+
+TEST(RecoveryEstimate, RefusesAWeightOfTheWrongSizeAndAStrainOfAScalar) {
+  const auto mesh = distorted_square(2);
+  const FESpace vector_space(mesh, 1, 2), scalar_space(mesh, 1, 1);
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(vector_space.num_dofs()), phi = Eigen::VectorXd::Zero(scalar_space.num_dofs());
+  const Eigen::MatrixXd I2 = Eigen::MatrixXd::Identity(2, 2), I3 = Eigen::MatrixXd::Identity(3, 3);
+  testing::expect_error_containing(
+      [&] { recovery_error_estimate("u", vector_space, u, GradientMeasure::Strain, I2); },
+      {"space error estimate of 'u': the weight is 2 x 2, the strain needs 3 x 3"});
+  testing::expect_error_containing(
+      [&] { recovery_error_estimate("phi", scalar_space, phi, GradientMeasure::Strain, I3); },
+      {"'phi'", "a strain needs 2 components, the field has 1"});
+  testing::expect_error_containing(
+      [&] { recovery_error_estimate("phi", scalar_space, u, GradientMeasure::Gradient, I2); },
+      {"'phi'", "18 coefficients, the space has 9 dofs"});
+}
+
+}  // namespace
+}  // namespace pc

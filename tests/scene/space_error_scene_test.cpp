@@ -1,0 +1,128 @@
+// The spatial error estimate as a scene user meets it: summary.json's space_error and space_error_max,
+// the VTU's cell data space_error_u, _v, _phi (and output.vtu_fields leaving them out), and the paper's
+// scene, where the estimate of the final state on 15 x 5 and 30 x 10 cells is checked against its true
+// spatial error: the difference from a run on 120 x 40 cells with the same steps (so that the time error
+// is the same in both), each field in its energy norm, effectivity within [0.5, 3].
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "assembly/point_locator.hpp"
+#include "assembly/region_geometry.hpp"
+#include "bricks/voigt.hpp"
+#include "models/piezo/piezo_space_error.hpp"
+#include "models/scene/scene.hpp"
+#include "models/scene/scene_runner.hpp"
+#include "support/error_and_temp_dir.hpp"
+#include "support/test_helpers.hpp"
+#include "support/vtu_reader.hpp"
+
+namespace pc {
+namespace {
+
+const std::string kScene = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
+
+// || q(grad f_fine) - q(grad f_coarse) ||_W over the fine mesh, the coarse field evaluated where each
+// fine quadrature point lies (the meshes are nested: a fine cell lies in one coarse cell).
+double energy_difference(const Model& fine, const Model& coarse, const std::string& field, GradientMeasure measure,
+                         const Eigen::MatrixXd& W) {
+  const FESpace& fs = fine.space(field);
+  const FESpace& cs = coarse.space(field);
+  const PointLocator locator(coarse.mesh());
+  const RegionGeometry geometry(fs.mesh(), "all", 2);
+  const int dim = 2, width = fs.num_components() * dim;
+  std::vector<double> gf(width), gc(width), qf(3), qc(3);
+  double sum = 0;
+  for (int e = 0; e < geometry.num_elements(); ++e)
+    for (int q = 0; q < geometry.num_points(); ++q) {
+      fs.gradient_in_cell(fine.values(field), geometry.cell(e), geometry.reference_points(-1)[q].data(), gf.data());
+      const LocatedPoint at = locator.locate_or_throw(geometry.point(e, q).data());
+      cs.gradient_in_cell(coarse.values(field), at.cell, at.xi.data(), gc.data());
+      if (measure == GradientMeasure::Strain) {
+        strain_from_gradient(dim, gf.data(), qf.data());
+        strain_from_gradient(dim, gc.data(), qc.data());
+      } else {
+        qf.assign(gf.begin(), gf.end());
+        qc.assign(gc.begin(), gc.end());
+      }
+      const Eigen::VectorXd d = Eigen::Map<Eigen::VectorXd>(qf.data(), W.rows()) - Eigen::Map<Eigen::VectorXd>(qc.data(), W.rows());
+      sum += geometry.weight(e, q) * d.dot(W * d);
+    }
+  return std::sqrt(sum);
+}
+
+struct MeshRun {
+  Scene scene;
+  std::unique_ptr<FoundationRun> run;
+  FoundationRunResult result;
+};
+
+std::unique_ptr<MeshRun> run_paper(int nx, int ny) {
+  auto r = std::make_unique<MeshRun>();
+  r->scene = load_scene_file(kScene, {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny), "time.steps=40",
+                                      "time.error_estimate=none"});
+  r->run = std::make_unique<FoundationRun>(r->scene, find_foundation(r->scene, "conductive"));
+  r->result = r->run->run("", false);
+  EXPECT_TRUE(r->result.completed) << r->result.message;
+  return r;
+}
+
+TEST(PaperSceneSpaceError, TheEstimateMatchesTheTrueSpatialError) {
+  const auto reference = run_paper(120, 40);
+  for (const int nx : {15, 30}) {
+    const auto coarse = run_paper(nx, nx / 3);
+    const Model& m = coarse->run->model();
+    ASSERT_EQ(coarse->result.space_error.size(), 3u) << "u, v (the scene has a viscosity) and phi";
+    const SpaceErrorEstimate estimate = piezo_space_error(m);
+    const struct {
+      const char* field;
+      GradientMeasure measure;
+      const char* weight;
+    } fields[] = {{"u", GradientMeasure::Strain, "B"}, {"v", GradientMeasure::Strain, "A"}, {"phi", GradientMeasure::Gradient, "beta"}};
+    for (const auto& f : fields) {
+      const SpaceErrorField* e = estimate.field(f.field);
+      ASSERT_NE(e, nullptr) << f.field;
+      EXPECT_DOUBLE_EQ(coarse->result.space_error.at(f.field), e->relative()) << "the summary's is the final state's";
+      const double truth = energy_difference(reference->run->model(), m, f.field, f.measure, m.constant(f.weight));
+      std::printf("paper scene %d x %d, %s: estimate %.3e, true %.3e, effectivity %.3f (relative estimate %.3e)\n", nx,
+                  nx / 3, f.field, e->estimate, truth, e->estimate / truth, e->relative());
+      EXPECT_GE(e->estimate / truth, 0.5) << f.field << " on " << nx;
+      EXPECT_LE(e->estimate / truth, 3.0) << f.field << " on " << nx;
+    }
+  }
+}
+
+class SpaceErrorOutput : public testing::TemporaryDirectoryTest {};
+
+TEST_F(SpaceErrorOutput, TheSummaryAndTheVtuHoldTheEstimate) {
+  const Scene scene = load_scene_file(kScene, {"mesh.nx=15", "mesh.ny=5", "time.steps=10", "output.vtu_every=10"});
+  FoundationRun run(scene, find_foundation(scene, "conductive"));
+  const FoundationRunResult r = run.run((directory_ / "conductive").string(), false);
+  ASSERT_TRUE(r.completed) << r.message;
+  const std::string summary = testing::read_text(directory_ / "conductive" / "summary.json");
+  EXPECT_CONTAINS(summary, "\"space_error\": {");
+  EXPECT_CONTAINS(summary, "\"space_error_max\"");
+  const std::string vtu = testing::read_text(directory_ / "conductive" / "paper2d_000010.vtu");
+  const SpaceErrorEstimate estimate = piezo_space_error(run.model());
+  for (const char* field : {"u", "v", "phi"}) {
+    const std::vector<double> cells = testing::find_array(vtu, "CellData", std::string("space_error_") + field).doubles();
+    ASSERT_EQ(cells.size(), 150u) << field;
+    double squares = 0;
+    for (double c : cells) squares += c * c;
+    EXPECT_NEAR(std::sqrt(squares), estimate.field(field)->estimate, 1e-12 * estimate.field(field)->estimate) << field;
+  }
+}
+
+TEST_F(SpaceErrorOutput, IsLeftOutOfTheVtuWhenTheSceneDoesNotListIt) {
+  const Scene scene = load_scene_file(kScene, {"mesh.nx=15", "mesh.ny=5", "time.steps=2", "output.vtu_every=2",
+                                               R"(output.vtu_fields=["u", "stress"])"});
+  FoundationRun run(scene, find_foundation(scene, "conductive"));
+  ASSERT_TRUE(run.run((directory_ / "conductive").string(), false).completed);
+  const std::string vtu = testing::read_text(directory_ / "conductive" / "paper2d_000002.vtu");
+  EXPECT_EQ(vtu.find("space_error"), std::string::npos);
+  EXPECT_CONTAINS(testing::read_text(directory_ / "conductive" / "summary.json"), "\"space_error\": {");
+}
+
+}  // namespace
+}  // namespace pc
