@@ -99,18 +99,36 @@ LocatedPoint PointLocator::locate_or_throw(const double* x) const {
   return *hit;
 }
 
-std::vector<double> evaluate_at(const FESpace& space, const Eigen::VectorXd& coefficients,
-                                const PointLocator& locator, const double* x) {
-  require(&space.mesh() == &locator.mesh(), "evaluate_at: the space and the point locator are on different meshes");
+namespace {
+
+// The cell of the field's space that holds x, and x's reference coordinates there.
+LocatedPoint locate_in_space(const FESpace& space, const PointLocator& locator, const double* x, const char* what) {
+  require(&space.mesh() == &locator.mesh(), what, ": the space and the point locator are on different meshes");
   const auto hit = locator.locate(x, [&space](int cell) { return space.has_cell(cell); });
   if (!hit) {
     const LocatedPoint in_mesh = locator.locate_or_throw(x);
-    fail("evaluate_at: point ", point_string(x, space.mesh().dim()), " lies in cell ", in_mesh.cell,
+    fail(what, ": point ", point_string(x, space.mesh().dim()), " lies in cell ", in_mesh.cell,
          ", outside the cells of the field's space");
   }
+  return *hit;
+}
+
+}  // namespace
+
+std::vector<double> evaluate_at(const FESpace& space, const Eigen::VectorXd& coefficients,
+                                const PointLocator& locator, const double* x) {
+  const LocatedPoint at = locate_in_space(space, locator, x, "evaluate_at");
   std::vector<double> value(space.num_components());
-  space.evaluate_in_cell(coefficients, hit->cell, hit->xi.data(), value.data());
+  space.evaluate_in_cell(coefficients, at.cell, at.xi.data(), value.data());
   return value;
+}
+
+std::vector<double> gradient_at(const FESpace& space, const Eigen::VectorXd& coefficients,
+                                const PointLocator& locator, const double* x) {
+  const LocatedPoint at = locate_in_space(space, locator, x, "gradient_at");
+  std::vector<double> gradient(size_t(space.num_components()) * space.mesh().dim());
+  space.gradient_in_cell(coefficients, at.cell, at.xi.data(), gradient.data());
+  return gradient;
 }
 
 }  // namespace pc

@@ -160,6 +160,20 @@ double weighted_square(GradientMeasure measure, const Eigen::MatrixXd& W, int bl
   return sum;
 }
 
+// The checks both norms make; returns the width of q.
+int check_measure(const std::string& what, const FESpace& space, const Eigen::VectorXd& coefficients,
+                  GradientMeasure measure, const Eigen::MatrixXd& weight) {
+  const int dim = space.mesh().dim(), components = space.num_components();
+  require(coefficients.size() == space.num_dofs(), what, ": ", coefficients.size(), " coefficients, the space has ",
+          space.num_dofs(), " dofs");
+  require(measure == GradientMeasure::Gradient || components == dim, what, ": a strain needs ", dim,
+          " components, the field has ", components);
+  const int n = measure == GradientMeasure::Strain ? voigt_size(dim) : dim;
+  require(weight.rows() == n && weight.cols() == n, what, ": the weight is ", weight.rows(), " x ", weight.cols(),
+          ", the ", measure == GradientMeasure::Strain ? "strain" : "gradient", " needs ", n, " x ", n);
+  return measure == GradientMeasure::Strain ? n : components * dim;
+}
+
 }  // namespace
 
 SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace& space,
@@ -167,16 +181,8 @@ SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace&
                                         const Eigen::MatrixXd& weight) {
   const Mesh& mesh = space.mesh();
   const int dim = mesh.dim(), components = space.num_components();
-  require(coefficients.size() == space.num_dofs(), "space error estimate of '", field, "': ", coefficients.size(),
-          " coefficients, the space has ", space.num_dofs(), " dofs");
-  require(measure == GradientMeasure::Gradient || components == dim, "space error estimate of '", field,
-          "': a strain needs ", dim, " components, the field has ", components);
-  const int n = measure == GradientMeasure::Strain ? voigt_size(dim) : dim;
-  require(weight.rows() == n && weight.cols() == n, "space error estimate of '", field, "': the weight is ",
-          weight.rows(), " x ", weight.cols(), ", the ", measure == GradientMeasure::Strain ? "strain" : "gradient",
-          " needs ", n, " x ", n);
-
-  const int width = components * dim, measured_width = measure == GradientMeasure::Strain ? n : width;
+  const int measured_width = check_measure("space error estimate of '" + field + "'", space, coefficients, measure, weight);
+  const int width = components * dim;
   const std::vector<double> nodal = space.order() == 1 ? patch_recovered_nodal_gradients(space, coefficients)
                                                         : averaged_nodal_gradients(space, coefficients);
   const ReferenceElement& element = space.element();
@@ -226,6 +232,27 @@ SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace&
   result.estimate = std::sqrt(std::max(estimate_squared, 0.0));
   result.norm = std::sqrt(std::max(norm_squared, 0.0));
   return result;
+}
+
+double energy_norm_difference(const FESpace& space, const Eigen::VectorXd& f, const PointGradient& g,
+                              GradientMeasure measure, const Eigen::MatrixXd& weight) {
+  const int measured_width = check_measure("energy norm difference", space, f, measure, weight);
+  const int dim = space.mesh().dim(), components = space.num_components(), width = components * dim;
+  const RegionGeometry geometry(space.mesh(), "all", 2 * space.order() + 2);
+  std::vector<double> gf(width), gg(width), qf(measured_width), qg(measured_width);
+  double sum = 0;
+  for (int e = 0; e < geometry.num_elements(); ++e) {
+    if (!space.has_cell(geometry.cell(e))) continue;
+    for (int q = 0; q < geometry.num_points(); ++q) {
+      space.gradient_in_cell(f, geometry.cell(e), geometry.reference_points(-1)[q].data(), gf.data());
+      g(geometry.point(e, q).data(), gg.data());
+      measured(measure, dim, components, gf.data(), qf.data());
+      measured(measure, dim, components, gg.data(), qg.data());
+      for (int a = 0; a < measured_width; ++a) qf[a] -= qg[a];
+      sum += geometry.weight(e, q) * weighted_square(measure, weight, components, qf.data());
+    }
+  }
+  return std::sqrt(std::max(sum, 0.0));
 }
 
 const SpaceErrorField* SpaceErrorEstimate::field(const std::string& name) const {

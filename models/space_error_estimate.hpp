@@ -24,6 +24,7 @@
 #include <Eigen/Core>
 
 #include "assembly/fe_space.hpp"
+#include "assembly/norms.hpp"
 
 namespace pc {
 
@@ -44,6 +45,13 @@ struct SpaceErrorField {
 SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace& space,
                                         const Eigen::VectorXd& coefficients, GradientMeasure measure,
                                         const Eigen::MatrixXd& weight);
+
+// || q(grad f) - q(g) ||_W over the field's cells, q as the measure says, W as above: the true error of f
+// in the estimate's norm when g is the exact gradient (g(x, out): out[c * dim + d] = d u_c / d x_d), or
+// that of a field on a coarser mesh when f is a fine reference and g the coarse field's gradient
+// (gradient_at, assembly/point_locator.hpp). Integrated with the rule of degree 2p + 2 of f's cells.
+double energy_norm_difference(const FESpace& space, const Eigen::VectorXd& f, const PointGradient& g,
+                              GradientMeasure measure, const Eigen::MatrixXd& weight);
 
 struct SpaceErrorEstimate {
   std::vector<SpaceErrorField> fields;
