@@ -267,4 +267,13 @@ double SpaceErrorEstimate::max_relative() const {
   return largest;
 }
 
+std::vector<double> SpaceErrorEstimate::relative_cell_indicators() const {
+  std::vector<double> combined(fields.empty() ? 0 : fields.front().cells.size(), 0.0);
+  for (const SpaceErrorField& f : fields)
+    if (f.norm > 0)
+      for (size_t c = 0; c < combined.size(); ++c) combined[c] += (f.cells[c] / f.norm) * (f.cells[c] / f.norm);
+  for (double& c : combined) c = std::sqrt(c);
+  return combined;
+}
+
 }  // namespace pc

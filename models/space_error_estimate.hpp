@@ -57,6 +57,9 @@ struct SpaceErrorEstimate {
   std::vector<SpaceErrorField> fields;
   const SpaceErrorField* field(const std::string& name) const;
   double max_relative() const;
+  // Per cell, sqrt(sum over fields of (eta_K / ||field||)^2): the fields in their own relative units, what
+  // marks cells for refinement (assembly/mesh_bisection.hpp's dorfler_marking).
+  std::vector<double> relative_cell_indicators() const;
 };
 
 }  // namespace pc
