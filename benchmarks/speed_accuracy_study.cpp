@@ -13,9 +13,11 @@
 //   linear     umfpack, mumps, eigen-lu, with the columns condensation (the Schur one does its sparse
 //              work in MUMPS whatever solver.linear says)
 // and then jointly ("joint": nx 15, 30, 60, 120 x P1, P2 x 50, 200, 800 steps x backward Euler, BDF2;
-// P2 up to 60 x 20) for the Pareto front. Per run it records dofs, Newton iterations, wall time and its
-// phases (assembly, factorisation, solve, condensation: summed over the Newton solves), peak resident
-// memory, and the error against the reference:
+// P2 up to 60 x 20) for the Pareto front, and "target": the settings the target-error mode chooses for
+// 10 %, 1 % and 0.1 % (its pilots run in this process, the choice then as any other setting). Per run
+// it records dofs, Newton iterations, wall time and its phases (assembly, factorisation, solve,
+// condensation: summed over the Newton solves), peak resident memory, and the error against the
+// reference:
 //   err_u, err_v, err_phi          relative discrete L2 error at the final time over the 31 x 11 points
 //                                  of grid.csv, ||a - ref|| / ||ref|| (both components for u and v)
 //   err_uy_corner_t, err_phi_center_t
@@ -59,6 +61,7 @@
 
 #include "models/output/csv_log.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "models/scene/target_error.hpp"
 #include "support/child_process.hpp"
 
 namespace {
@@ -164,10 +167,24 @@ std::vector<Settings> axis_settings(const std::string& axis, const Settings& bas
           for (const char* scheme : {"backward_euler", "bdf2"})
             if (order == 1 || nx <= 60)
               vary([&](Settings& s) { s.nx = nx, s.ny = nx / 3, s.order = order, s.steps = steps, s.scheme = scheme; });
+  if (axis == "target")  // what --target-error chooses (models/scene/target_error.hpp), from its pilots
+    for (double target : {0.1, 0.01, 0.001}) {
+      const Scene scene = load_scene_file(kScene, {"target_error=" + Settings::number(target)});
+      const auto began = std::chrono::steady_clock::now();
+      try {
+        const TargetErrorChoice c = choose_for_target_error(scene, {kFoundation}, false);
+        std::printf("target %g: %s (pilots and choice %.2f s)\n", target, c.explanation.c_str(),
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
+        vary([&](Settings& s) { s.nx = c.nx, s.ny = c.ny, s.order = c.order, s.steps = c.steps, s.scheme = c.scheme; });
+      } catch (const Error& e) {
+        std::printf("target %g: refused: %s\n", target, e.what());
+      }
+      std::fflush(stdout);
+    }
   return runs;
 }
 const std::vector<std::string> kAxes = {"mesh", "order", "steps", "scheme", "c_nu", "tolerance", "condensation",
-                                        "linear", "joint"};
+                                        "linear", "joint", "target"};
 
 // ------------------------------------------------------------------------------------------- child
 // One run into `dir`; prints its numbers on one line for the parent, the run's message last.

@@ -1,5 +1,6 @@
 // The command-line runner (installed as `piezocontact`):
 //   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]
+//                    [--target-error E]
 //   piezocontact check SCENE [--set key=value ...]
 //   piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]
 //   piezocontact list [--plugin LIB ...]
@@ -13,7 +14,9 @@
 // recorded in DIR/manifest.json (same scene and overrides) from its last checkpoint. `modes` writes the
 // N (default 6) eigenfrequencies nearest to HZ (default 0: the lowest) and their shapes into
 // DIR/<scene>/modes/ (models/scene/scene_modes.hpp); --open-circuit floats the driven electrodes (no
-// charge) instead of shorting them, into DIR/<scene>/modes_open_circuit/.
+// charge) instead of shorting them, into DIR/<scene>/modes_open_circuit/. --target-error 1% (or 0.01)
+// is the scene key target_error: pilot runs, then the order, mesh, scheme and steps whose estimated
+// error is below it at the least predicted cost (models/scene/target_error.hpp).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -30,6 +33,7 @@
 #include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_modes.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "models/scene/target_error.hpp"
 #include "models/scene/time_estimate.hpp"
 
 namespace {
@@ -55,11 +59,21 @@ T number(const std::string& option, const std::string& text) {
 int usage() {
   std::fprintf(stderr,
                "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]\n"
+               "                        [--target-error E (a fraction, 0.01, or a percentage, 1%%)]\n"
                "       piezocontact check SCENE [--set key=value ...]\n"
                "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]\n"
                "       piezocontact list [--plugin LIB ...]\n"
                "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n");
   return 2;
+}
+
+// --target-error's value as the fraction the scene key holds: "1%" is 0.01, "0.01" is itself.
+std::string target_error_fraction(const std::string& text) {
+  const bool percent = !text.empty() && text.back() == '%';
+  const double value = number<double>("--target-error", percent ? text.substr(0, text.size() - 1) : text);
+  char fraction[32];
+  std::snprintf(fraction, sizeof fraction, "%.17g", percent ? value / 100 : value);
+  return fraction;
 }
 
 }  // namespace
@@ -140,6 +154,7 @@ int main(int argc, char** argv) {
     else if (arg == "--no-sweep") options.sweep = false;
     else if (arg == "--quiet") options.progress = false;
     else if (arg == "--resume") options.resume = true;
+    else if (arg == "--target-error" && command == "run") overrides.push_back("target_error=" + target_error_fraction(value()));
     else if (arg == "--count" && command == "modes") modal.modes = number<int>(arg, value());
     else if (arg == "--shift" && command == "modes") modal.shift_hz = number<double>(arg, value());
     else if (arg == "--open-circuit" && command == "modes") open_circuit = true;
@@ -187,6 +202,14 @@ int main(int argc, char** argv) {
       if (!known) throw pc::Error("--only: the scene has no foundation '" + name + "'");
     }
     pc::install_interrupt_handlers();  // SIGINT, SIGTERM: stop after the current step, results written
+    if (scene.target_error) {
+      const bool progress = options.progress && pc::processes::is_writer();
+      if (progress) std::printf("target error %g: pilot runs\n", *scene.target_error);
+      const pc::Scene chosen = pc::scene_for_target_error(scene, options.only, progress);
+      if (pc::processes::is_writer())
+        std::printf("target error %g: %s\n", *scene.target_error, chosen.target_choice->explanation.c_str());
+      return pc::run_scene(chosen, options) ? 0 : 1;
+    }
     return pc::run_scene(scene, options) ? 0 : 1;
   } catch (const pc::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -262,7 +262,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
   }).value_or("unnamed");
   problems.check_void([&] {
     require_known_keys(json, {"name", "about", "plugins", "mesh", "regions", "material", "contact", "foundation", "loads",
-                              "electrodes", "bricks", "time", "solver", "output"});
+                              "electrodes", "bricks", "time", "solver", "output", "target_error"});
   });
   // Plugins first: the laws they register are names the rest of the scene may use.
   if (const auto plugins = json.find("plugins")) {
@@ -540,6 +540,14 @@ Scene load_scene(const Json& json, const std::string& directory) {
       scene.adaptive = read_adaptive_steps(*x, scene.end_time);
       require(scene.estimate_time_error, "scene: '", x->path(), "' needs the time error estimate, which "
               "time.error_estimate = none turns off");
+    }
+    if (const auto x = json.find("target_error")) {
+      scene.target_error = x->as_number_in(1e-6, 0.5);
+      require(!scene.mesh_generator.empty(), "scene: 'target_error' chooses the mesh size of a generated mesh "
+              "(mesh.generator); this scene's mesh is the gmsh file '", scene.mesh_file, "'");
+      require(scene.estimate_time_error, "scene: 'target_error' needs the time error estimate, which "
+              "time.error_estimate = none turns off");
+      require(!scene.adaptive, "scene: 'target_error' chooses uniform steps; it cannot be combined with time.adaptive");
     }
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);

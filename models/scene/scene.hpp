@@ -5,11 +5,13 @@
 // with the dotted path of the offending value ("contact.c_nu must be a number, got the string \"1e12\"").
 // The format is documented in docs/scenes.md; scenes/paper2d.json is the paper's test.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "assembly/vtu_format.hpp"
 #include "models/scene/json.hpp"
+#include "models/scene/target_error_choice.hpp"
 #include "models/solvers/newton.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/stepper.hpp"
@@ -87,6 +89,10 @@ struct Scene {
   // time.error_estimate: "linearised" (the default), "summed" or "none" (models/time_error_estimate.hpp).
   bool estimate_time_error = true;
   TimeErrorPropagation time_error_propagation = TimeErrorPropagation::Linearised;
+  // target_error: the estimated error the run must reach (models/scene/target_error.hpp), and once
+  // scene_for_target_error has chosen, what it chose.
+  std::optional<double> target_error;
+  std::optional<TargetErrorChoice> target_choice;
   int threads = 0;                // solver.threads: of the element loops and products (0: assembly/threads.hpp's default)
   SceneOutput output;
 };

@@ -289,6 +289,20 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   }
   s.set("space_error", std::move(space_error));
   s.set("space_error_max", finite_or_null(space_error_max));
+  // The target-error mode: what it chose, what it predicted, and what the run's estimates say it achieved.
+  if (const auto& c = scene.target_choice) {
+    Json t = Json::object();
+    t.set("target", Json(c->target));
+    t.set("chosen", Json(c->description()));
+    t.set("predicted_space", Json(c->predicted_space));
+    t.set("predicted_time", Json(c->predicted_time));
+    t.set("predicted_seconds", Json(c->predicted_seconds));
+    t.set("achieved_space", finite_or_null(space_error_max));
+    t.set("achieved_time", finite_or_null(time_error_max));
+    t.set("achieved", finite_or_null(space_error_max + time_error_max));
+    t.set("why", Json(c->explanation));
+    s.set("target_error", std::move(t));
+  }
   if (scene.adaptive) {
     Json adaptive = Json::object();
     adaptive.set("tolerance", Json(scene.adaptive->tolerance));
@@ -368,6 +382,7 @@ void save_totals(const FoundationRunResult& r, double wall_seconds, Checkpoint& 
   c.numbers["run:vtu_seconds"] = r.vtu_seconds;
   c.numbers["run:factorizations"] = r.factorizations;
   c.numbers["run:wall_seconds"] = wall_seconds;
+  for (const auto& [field, scale] : r.space_error_scale) c.numbers["run:space_error_scale:" + field] = scale;
 }
 
 void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_seconds) {
@@ -383,6 +398,9 @@ void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_se
   r.vtu_seconds = c.numbers.count("run:vtu_seconds") ? c.number("run:vtu_seconds") : 0.0;
   r.factorizations = int(c.number("run:factorizations"));
   wall_seconds = c.number("run:wall_seconds");
+  const std::string scale_prefix = "run:space_error_scale:";
+  for (const auto& [key, value] : c.numbers)
+    if (key.starts_with(scale_prefix)) r.space_error_scale[key.substr(scale_prefix.size())] = value;
 }
 
 // The series' written steps as two vectors of the checkpoint.
@@ -663,6 +681,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       if (books) books->start(model);
     }
     require_finite_state(model, when(r));
+    SpaceErrorEstimate space_estimate = piezo_space_error(model);
+    for (const SpaceErrorField& f : space_estimate.fields)
+      result.space_error_scale[f.field] = std::max(result.space_error_scale[f.field], f.norm);
     if (!series) return;
     timed_output([&] {
       const auto began = std::chrono::steady_clock::now();
@@ -674,7 +695,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       if (out.writes_vtu_field("contact_state"))
         writer.add_point_data("contact_state", 1, contact_state_on_mesh_nodes(built, out.slip_threshold));
       if (out.writes_vtu_field("space_error"))
-        for (SpaceErrorField& f : piezo_space_error(model).fields)
+        for (SpaceErrorField& f : space_estimate.fields)
           writer.add_cell_data("space_error_" + f.field, 1, std::move(f.cells));
       const std::string bad = writer.non_finite_array();
       require(bad.empty(), when(r), ": the output field '", bad, "' is not finite; nothing non-finite is written");
@@ -755,7 +776,11 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   }
   // The final state's spatial error; a state stopped mid-step has none.
   if (!stopped_in_callback)
-    for (const SpaceErrorField& f : piezo_space_error(m).fields) result.space_error[f.field] = f.relative();
+    for (const SpaceErrorField& f : piezo_space_error(m).fields) {
+      double& scale = result.space_error_scale[f.field];
+      scale = std::max(scale, f.norm);
+      result.space_error[f.field] = scale > 0 ? f.estimate / scale : 0.0;
+    }
   // The final tables hold the final state, unless that is where a non-finite value appeared.
   if (!stopped_in_callback) {
     try {
@@ -859,6 +884,14 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
                     r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy,
                     r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min, r.phi_max,
                     r.message.empty() ? "" : ("; " + r.message).c_str());
+      if (progress && scene.target_choice) {
+        double space = 0, time = 0;
+        for (const auto& [field, relative] : r.space_error) space = std::max(space, relative);
+        for (const FieldTimeError& e : r.time_error) time = std::max(time, e.global);
+        std::printf("  %s: target error %.3g, estimated %.3g (space %.3g + time %.3g; predicted %.3g + %.3g)\n",
+                    f.name.c_str(), scene.target_choice->target, space + time, space, time,
+                    scene.target_choice->predicted_space, scene.target_choice->predicted_time);
+      }
     }
 
     // Figure 5: final displacement against the foundation voltage, from one model of the first foundation

@@ -53,7 +53,9 @@ struct FoundationRunResult {
   int cutbacks = 0;  // failed step attempts that were retried with a smaller step
   int rejections = 0;  // time.adaptive: attempts rejected on their estimated time error
   std::vector<FieldTimeError> time_error;  // the estimated time error at the end, per field (global)
-  std::map<std::string, double> space_error;  // the estimated spatial error of the final state, relative
+  // The estimated spatial error of the final state, relative to the largest norm the field had at an
+  // output step or the end (space_error_scale), as the time error is relative to its largest RMS.
+  std::map<std::string, double> space_error, space_error_scale;
   double wall_seconds = 0;
   double max_abs_ux = 0, max_abs_uy = 0, phi_min = 0, phi_max = 0, uy_corner = 0, ux_corner = 0, phi_center = 0;
   int dim = 2;                            // of the mesh: max_abs_uz and uz_corner are results in 3D only

@@ -1,0 +1,22 @@
+#pragma once
+// What the target-error mode chose (models/scene/target_error.hpp), kept with the scene it made.
+#include <string>
+#include <vector>
+
+namespace pc {
+
+struct TargetErrorChoice {
+  double target = 0;
+  int order = 1;
+  std::string scheme;  // a time.scheme name
+  int nx = 0, ny = 0, nz = 0;
+  int steps = 0;
+  int dofs = 0;  // predicted
+  double predicted_space = 0, predicted_time = 0, predicted_seconds = 0;
+  std::string explanation;  // the pilots' figures, the rates and the choice, for the user
+  // The scene overrides that make the choice: mesh.nx, ny (nz), mesh.order, time.scheme, time.steps.
+  std::vector<std::string> overrides() const;
+  std::string description() const;  // e.g. "P2 on 30 x 10 cells, bdf2, 200 steps"
+};
+
+}  // namespace pc
