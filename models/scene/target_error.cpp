@@ -21,27 +21,28 @@ struct PilotResult {
   double space = 0, time = 0;
 };
 
+int scaled(int n, double factor) { return n > 0 ? std::max(1, int(std::lround(n * factor))) : 0; }
+
+// A setting: the order, the scheme, the mesh (cells along each axis scaled by factor) and the steps.
+TargetErrorChoice setting(int order, const std::string& scheme, int nx, int ny, int nz, double factor, int steps) {
+  TargetErrorChoice c;
+  c.order = order;
+  c.scheme = scheme;
+  c.nx = scaled(nx, factor);
+  c.ny = scaled(ny, factor);
+  c.nz = scaled(nz, factor);
+  c.steps = steps;
+  return c;
+}
+
 struct Pilot {
-  int order = 1;
-  std::string scheme;
-  double scale = 1;  // of the mesh, against the scene's
-  int nx = 0, ny = 0, nz = 0;
+  TargetErrorChoice setting;
   PilotResult result;
 };
 
-int scaled(int n, double factor) { return n > 0 ? std::max(1, int(std::lround(n * factor))) : 0; }
-
-std::vector<std::string> mesh_overrides(int nx, int ny, int nz) {
-  std::vector<std::string> o = {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny)};
-  if (nz > 0) o.push_back("mesh.nz=" + std::to_string(nz));
-  return o;
-}
-
-PilotResult run_pilot(const Scene& scene, const std::vector<std::string>& only, const Pilot& p, int steps) {
+PilotResult run_pilot(const Scene& scene, const std::vector<std::string>& only, const TargetErrorChoice& p) {
   std::vector<std::string> overrides = scene.overrides;
-  for (const std::string& o : mesh_overrides(p.nx, p.ny, p.nz)) overrides.push_back(o);
-  overrides.insert(overrides.end(), {"mesh.order=" + std::to_string(p.order), "time.scheme=" + p.scheme,
-                                     "time.steps=" + std::to_string(steps)});
+  for (const std::string& o : p.overrides()) overrides.push_back(o);
   Scene pilot = load_scene_file(scene.file, overrides);
   pilot.target_error.reset();
   PilotResult worst;
@@ -49,8 +50,7 @@ PilotResult run_pilot(const Scene& scene, const std::vector<std::string>& only, 
     if (!only.empty() && std::find(only.begin(), only.end(), f.name) == only.end()) continue;
     FoundationRun run(pilot, f);
     const FoundationRunResult r = run.run("", false);
-    require(r.completed, "target error: the pilot run (", p.order == 1 ? "P1" : "P2", " on ", p.nx, " x ", p.ny,
-            p.nz > 0 ? message(" x ", p.nz) : std::string(), " cells, ", p.scheme, ", ", steps, " steps) of the ", f.name,
+    require(r.completed, "target error: the pilot run (", p.description(), ") of the ", f.name,
             " foundation did not complete: ", r.message);
     worst.dofs = r.ndof;
     for (const auto& [field, relative] : r.space_error) worst.space = std::max(worst.space, relative);
@@ -64,7 +64,8 @@ int scheme_order(const std::string& scheme) { return scheme == "bdf2" ? 2 : 1; }
 }  // namespace
 
 std::vector<std::string> TargetErrorChoice::overrides() const {
-  std::vector<std::string> o = mesh_overrides(nx, ny, nz);
+  std::vector<std::string> o = {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny)};
+  if (nz > 0) o.push_back("mesh.nz=" + std::to_string(nz));
   o.insert(o.end(), {"mesh.order=" + std::to_string(order), "time.scheme=" + scheme, "time.steps=" + std::to_string(steps)});
   return o;
 }
@@ -84,18 +85,11 @@ TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<
   std::vector<Pilot> pilots;
   for (const auto& [order, scheme] : {std::pair{1, "backward_euler"}, std::pair{2, "bdf2"}})
     for (double scale : {0.25, 0.5}) {
-      Pilot p;
-      p.order = order;
-      p.scheme = scheme;
-      p.scale = scale;
-      p.nx = scaled(scene.nx, scale);
-      p.ny = scaled(scene.ny, scale);
-      p.nz = scaled(scene.nz, scale);
-      p.result = run_pilot(scene, only, p, pilot_steps);
+      Pilot p{setting(order, scheme, scene.nx, scene.ny, scene.nz, scale, pilot_steps), {}};
+      p.result = run_pilot(scene, only, p.setting);
       if (progress)
-        std::printf("  target error pilot: P%d on %d x %d%s cells, %s, %d steps: %d dofs, space %.3g, time %.3g\n", order,
-                    p.nx, p.ny, p.nz > 0 ? message(" x ", p.nz).c_str() : "", scheme, pilot_steps, p.result.dofs,
-                    p.result.space, p.result.time);
+        std::printf("  target error pilot: %s: %d dofs, space %.3g, time %.3g\n", p.setting.description().c_str(),
+                    p.result.dofs, p.result.space, p.result.time);
       pilots.push_back(p);
     }
 
@@ -125,21 +119,15 @@ TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<
         const double factor = std::pow(2.0, j / 2.0);  // over the finer pilot's mesh, 1/2 to 32
         const double space = fine.result.space * std::pow(factor, -rate);
         const double dofs = fine.result.dofs * std::pow(factor, dim);
-        const int cells[3] = {scaled(fine.nx, factor), scaled(fine.ny, factor), scaled(fine.nz, factor)};
+        const int cells[3] = {scaled(fine.setting.nx, factor), scaled(fine.setting.ny, factor), scaled(fine.setting.nz, factor)};
         if (dofs > kMaxDofs || (memory > 0 && estimate_structured_run(dim, cells, order).bytes > memory)) break;
         for (int k = 0; k <= 22; ++k) {
           // From half the pilots' steps up: the time model is not trusted far below what was measured.
           const int steps = int(std::lround(std::max(10, pilot_steps / 2) * std::pow(2.0, k / 2.0)));
           const double time = timed.result.time * std::pow(double(pilot_steps) / steps, scheme_order(scheme));
           const double seconds = estimate_run_seconds(dim, dofs, steps).seconds;
-          TargetErrorChoice c;
+          TargetErrorChoice c = setting(order, scheme, fine.setting.nx, fine.setting.ny, fine.setting.nz, factor, steps);
           c.target = target;
-          c.order = order;
-          c.scheme = scheme;
-          c.nx = scaled(fine.nx, factor);
-          c.ny = scaled(fine.ny, factor);
-          c.nz = scaled(fine.nz, factor);
-          c.steps = steps;
           c.dofs = int(dofs);
           c.predicted_space = space;
           c.predicted_time = time;

@@ -27,8 +27,7 @@ using testing::PiezoMmsExact;
 using testing::PiezoMmsPhysics;
 using testing::TimeProfile;
 
-const TimeProfile kTime{[](double t) { return std::sin(2 * t); }, [](double t) { return 2 * std::cos(2 * t); },
-                        [](double t) { return -4 * std::sin(2 * t); }};
+const TimeProfile kTime = testing::sine_profile();
 constexpr int kSteps = 40;
 
 testing::PiezoMmsProblem problem_on(std::shared_ptr<const Mesh> mesh, const PiezoMmsExact& exact) {

@@ -65,8 +65,7 @@ INSTANTIATE_TEST_SUITE_P(Bricks, StaticPiezo, ::testing::Values(1, 2));
 
 TEST(DynamicPiezo, BackwardEulerIsFirstOrderInTime) {
   const PiezoMmsExact exact;
-  const TimeProfile time{[](double t) { return std::sin(2 * t); }, [](double t) { return 2 * std::cos(2 * t); },
-                         [](double t) { return -4 * std::sin(2 * t); }};
+  const TimeProfile time = testing::sine_profile();
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 6, 6, Shape::Triangle));
   const double T = 1.0;
   std::vector<double> errors;

@@ -37,8 +37,7 @@ using testing::TimeProfile;
 
 const PiezoMmsPhysics kDynamic{true, true};
 const PiezoMmsPhysics kQuasiStatic{false, true};
-const TimeProfile kSmooth{[](double t) { return std::sin(2 * t); }, [](double t) { return 2 * std::cos(2 * t); },
-                          [](double t) { return -4 * std::sin(2 * t); }};
+const TimeProfile kSmooth = testing::sine_profile();
 
 // A smoothed step from -1 to 1 of width w at t0: g = tanh((t - t0) / w).
 TimeProfile smoothed_step(double t0, double w) {

@@ -43,8 +43,7 @@ using testing::PiezoMmsExact;
 using testing::PiezoMmsPhysics;
 using testing::TimeProfile;
 
-const TimeProfile kTime{[](double t) { return std::sin(2 * t); }, [](double t) { return 2 * std::cos(2 * t); },
-                        [](double t) { return -4 * std::sin(2 * t); }};
+const TimeProfile kTime = testing::sine_profile();
 constexpr double kT = 0.5;
 const PiezoMmsPhysics kDynamic{true, true};
 const PiezoMmsPhysics kQuasiStatic{false, true};

@@ -74,6 +74,12 @@ struct TimeProfile {
   std::function<double(double)> g, g_dot, g_ddot;
 };
 
+// g = sin 2t: smooth, starting from rest in u (g(0) = 0) with a velocity (g'(0) = 2).
+inline TimeProfile sine_profile() {
+  return {[](double t) { return std::sin(2 * t); }, [](double t) { return 2 * std::cos(2 * t); },
+          [](double t) { return -4 * std::sin(2 * t); }};
+}
+
 struct PiezoMmsProblem {
   std::unique_ptr<Model> model;
   std::unique_ptr<TimeScheme> scheme;
