@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 
 #include <Eigen/QR>
 
@@ -60,8 +59,9 @@ std::vector<double> patch_recovered_nodal_gradients(const FESpace& space, const 
   std::vector<std::vector<int>> patch(n);
   std::vector<double> centre_gradient(size_t(mesh.num_cells()) * width);
   std::vector<std::array<double, 3>> centre_point(mesh.num_cells());
-  // A face of the space's domain belongs to one of its cells: its dofs are the boundary's.
-  std::map<std::vector<int>, int> face_count;
+  // A face of the space's domain belongs to one of its cells: its dofs are the boundary's. Faces as sorted
+  // vertex dofs (padded with -1), sorted, so that a face seen once is a run of one.
+  std::vector<std::array<int, 4>> faces;
   for (int cell = 0; cell < mesh.num_cells(); ++cell) {
     if (!space.has_cell(cell)) continue;
     const auto dofs = space.cell_scalar_dofs(cell);
@@ -70,16 +70,23 @@ std::vector<double> patch_recovered_nodal_gradients(const FESpace& space, const 
     for (int k = 0; k < num_vertices(shape); ++k)
       for (int d = 0; d < dim; ++d) centre_point[cell][d] += mesh.node(mesh.cell(cell)[k])[d] / num_vertices(shape);
     for (int face = 0; face < num_faces(shape); ++face) {
-      std::vector<int> key;
-      for (int local : face_vertices(shape, face)) key.push_back(dofs[local]);
-      std::sort(key.begin(), key.end());
-      ++face_count[key];
+      std::array<int, 4> key{-1, -1, -1, -1};
+      const auto local = face_vertices(shape, face);
+      for (size_t k = 0; k < local.size(); ++k) key[k] = dofs[local[k]];
+      std::sort(key.begin(), key.begin() + local.size());
+      faces.push_back(key);
     }
   }
+  std::sort(faces.begin(), faces.end());
   std::vector<char> on_boundary(n, 0);
-  for (const auto& [face, count] : face_count)
-    if (count == 1)
-      for (int dof : face) on_boundary[dof] = 1;
+  for (size_t i = 0; i < faces.size();) {
+    size_t j = i + 1;
+    while (j < faces.size() && faces[j] == faces[i]) ++j;
+    if (j == i + 1)
+      for (int dof : faces[i])
+        if (dof >= 0) on_boundary[dof] = 1;
+    i = j;
+  }
 
   // The fit around a node: coefficients ((dim + 1) x width) of a + b . (x - x_node) / h, or none when
   // its patch has too few cells or they lie so that the fit is not unique.
