@@ -595,7 +595,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
   problems.check_void([&] {
     const auto o = json.find("output");
     if (!o) return;
-    require_known_keys(*o, {"vtu_every", "vtu_format", "vtu_fields", "progress_every", "probes", "grid",
+    require_known_keys(*o, {"vtu_every", "vtu_format", "vtu_fields", "progress_every", "space_error_every", "probes", "grid",
                             "slip_threshold", "phi_f_sweep", "sweep_steps", "checkpoint_every", "contact_history",
                             "energy_books"});
     SceneOutput& out = scene.output;
@@ -605,6 +605,7 @@ Scene load_scene(const Json& json, const std::string& directory) {
     if (const auto x = o->find("vtu_fields")) out.vtu_fields = read_vtu_fields(*x, electric);
     if (const auto x = o->find("checkpoint_every")) out.checkpoint_every = x->as_int_at_least(0);
     if (const auto x = o->find("progress_every")) out.progress_every = x->as_int_at_least(1);
+    if (const auto x = o->find("space_error_every")) out.space_error_every = x->as_int_at_least(0);
     if (const auto p = o->find("probes")) {
       require_known_keys(*p, {"corner", "center"});
       const auto corner = p->at("corner").as_vector(size_t(dim)), center = p->at("center").as_vector(size_t(dim));

@@ -47,6 +47,10 @@ struct SceneOutput {
   // Whether the VTU files hold that array.
   bool writes_vtu_field(const std::string& name) const;
   int progress_every = 20;
+  // The spatial error estimate every N accepted steps (0: at the VTU output steps only), for its largest
+  // value over the run (space_error_peak in summary.json): a transient's peak between output steps is
+  // otherwise missed. The target-error mode sets 1.
+  int space_error_every = 0;
   int checkpoint_every = 10;  // a checkpoint (for --resume) every N steps and at a stop; 0: only at a stop
   std::array<double, 3> corner{}, center{};  // probes of history.csv and summary.json
   SceneGrid grid;

@@ -240,6 +240,19 @@ std::vector<double> history_row(const Model& m, const PointLocator& locator, con
   return row;
 }
 
+}  // namespace
+
+double FoundationRunResult::space_error_peak() const {
+  double peak = 0;
+  for (const auto& [field, largest] : space_error_largest) {
+    const auto scale = space_error_scale.find(field);
+    if (scale != space_error_scale.end() && scale->second > 0) peak = std::max(peak, largest / scale->second);
+  }
+  return peak;
+}
+
+namespace {
+
 // The result's numbers by name, as summary.json holds them.
 std::vector<std::pair<const char*, double>> result_numbers(const FoundationRunResult& r) {
   std::vector<std::pair<const char*, double>> numbers = {{"max_abs_ux", r.max_abs_ux}, {"max_abs_uy", r.max_abs_uy}};
@@ -289,6 +302,8 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   }
   s.set("space_error", std::move(space_error));
   s.set("space_error_max", finite_or_null(space_error_max));
+  s.set("time_error_peak", finite_or_null(r.time_error_peak));
+  s.set("space_error_peak", finite_or_null(r.space_error_peak()));
   // The target-error mode: what it chose, what it predicted, and what the run's estimates say it achieved.
   if (const auto& c = scene.target_choice) {
     Json t = Json::object();
@@ -297,9 +312,9 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
     t.set("predicted_space", Json(c->predicted_space));
     t.set("predicted_time", Json(c->predicted_time));
     t.set("predicted_seconds", Json(c->predicted_seconds));
-    t.set("achieved_space", finite_or_null(space_error_max));
-    t.set("achieved_time", finite_or_null(time_error_max));
-    t.set("achieved", finite_or_null(space_error_max + time_error_max));
+    t.set("achieved_space", finite_or_null(r.space_error_peak()));
+    t.set("achieved_time", finite_or_null(r.time_error_peak));
+    t.set("achieved", finite_or_null(r.space_error_peak() + r.time_error_peak));
     t.set("why", Json(c->explanation));
     s.set("target_error", std::move(t));
   }
@@ -383,6 +398,8 @@ void save_totals(const FoundationRunResult& r, double wall_seconds, Checkpoint& 
   c.numbers["run:factorizations"] = r.factorizations;
   c.numbers["run:wall_seconds"] = wall_seconds;
   for (const auto& [field, scale] : r.space_error_scale) c.numbers["run:space_error_scale:" + field] = scale;
+  for (const auto& [field, largest] : r.space_error_largest) c.numbers["run:space_error_largest:" + field] = largest;
+  c.numbers["run:time_error_peak"] = r.time_error_peak;
 }
 
 void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_seconds) {
@@ -398,9 +415,11 @@ void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_se
   r.vtu_seconds = c.numbers.count("run:vtu_seconds") ? c.number("run:vtu_seconds") : 0.0;
   r.factorizations = int(c.number("run:factorizations"));
   wall_seconds = c.number("run:wall_seconds");
-  const std::string scale_prefix = "run:space_error_scale:";
-  for (const auto& [key, value] : c.numbers)
-    if (key.starts_with(scale_prefix)) r.space_error_scale[key.substr(scale_prefix.size())] = value;
+  for (const auto& [prefix, values] : {std::pair{std::string("run:space_error_scale:"), &r.space_error_scale},
+                                      std::pair{std::string("run:space_error_largest:"), &r.space_error_largest}})
+    for (const auto& [key, value] : c.numbers)
+      if (key.starts_with(prefix)) (*values)[key.substr(prefix.size())] = value;
+  if (c.numbers.count("run:time_error_peak")) r.time_error_peak = c.number("run:time_error_peak");
 }
 
 // The series' written steps as two vectors of the checkpoint.
@@ -629,6 +648,13 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     NewtonSolver& newton;
     ~ForgetCallback() { newton.set_iteration_callback(nullptr); }
   } forget_callback{newton};
+  // The spatial estimate's largest norm and value per field so far (FoundationRunResult::space_error_peak).
+  const auto note_space_error = [&](const SpaceErrorEstimate& estimate) {
+    for (const SpaceErrorField& f : estimate.fields) {
+      result.space_error_scale[f.field] = std::max(result.space_error_scale[f.field], f.norm);
+      result.space_error_largest[f.field] = std::max(result.space_error_largest[f.field], f.estimate);
+    }
+  };
   callbacks.on_step = [&](const Model& model, const StepRecord& r) {
     add_phases(r.newton);
     NewtonReport cut_back;  // the failed attempts before this step
@@ -638,6 +664,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     note_linear_strategy();
     done = counts_of(r.state);
     require_finite_state(model, when(r));
+    for (const FieldTimeError& e : r.time_error.fields) result.time_error_peak = std::max(result.time_error_peak, e.global);
+    if (scene.output.space_error_every > 0 && r.step % scene.output.space_error_every == 0)
+      note_space_error(piezo_space_error(model));
     timed_output([&] {
       std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
       row.insert(row.end(), {r.dt, r.time_error.max_local()});
@@ -682,8 +711,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     }
     require_finite_state(model, when(r));
     SpaceErrorEstimate space_estimate = piezo_space_error(model);
-    for (const SpaceErrorField& f : space_estimate.fields)
-      result.space_error_scale[f.field] = std::max(result.space_error_scale[f.field], f.norm);
+    note_space_error(space_estimate);
     if (!series) return;
     timed_output([&] {
       const auto began = std::chrono::steady_clock::now();
@@ -775,12 +803,14 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     result.n_contact_nodes = int(diagnostics.at("contact_nodes_in_compression"));
   }
   // The final state's spatial error; a state stopped mid-step has none.
-  if (!stopped_in_callback)
-    for (const SpaceErrorField& f : piezo_space_error(m).fields) {
-      double& scale = result.space_error_scale[f.field];
-      scale = std::max(scale, f.norm);
+  if (!stopped_in_callback) {
+    const SpaceErrorEstimate final_estimate = piezo_space_error(m);
+    note_space_error(final_estimate);
+    for (const SpaceErrorField& f : final_estimate.fields) {
+      const double scale = result.space_error_scale[f.field];
       result.space_error[f.field] = scale > 0 ? f.estimate / scale : 0.0;
     }
+  }
   // The final tables hold the final state, unless that is where a non-finite value appeared.
   if (!stopped_in_callback) {
     try {
@@ -885,9 +915,7 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
                     r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min, r.phi_max,
                     r.message.empty() ? "" : ("; " + r.message).c_str());
       if (progress && scene.target_choice) {
-        double space = 0, time = 0;
-        for (const auto& [field, relative] : r.space_error) space = std::max(space, relative);
-        for (const FieldTimeError& e : r.time_error) time = std::max(time, e.global);
+        const double space = r.space_error_peak(), time = r.time_error_peak;
         std::printf("  %s: target error %.3g, estimated %.3g (space %.3g + time %.3g; predicted %.3g + %.3g)\n",
                     f.name.c_str(), scene.target_choice->target, space + time, space, time,
                     scene.target_choice->predicted_space, scene.target_choice->predicted_time);

@@ -54,8 +54,13 @@ struct FoundationRunResult {
   int rejections = 0;  // time.adaptive: attempts rejected on their estimated time error
   std::vector<FieldTimeError> time_error;  // the estimated time error at the end, per field (global)
   // The estimated spatial error of the final state, relative to the largest norm the field had at an
-  // output step or the end (space_error_scale), as the time error is relative to its largest RMS.
-  std::map<std::string, double> space_error, space_error_scale;
+  // output step or the end (space_error_scale), as the time error is relative to its largest RMS; and the
+  // largest estimate of each field at those times (space_error_largest, absolute).
+  std::map<std::string, double> space_error, space_error_scale, space_error_largest;
+  // The largest estimates over the run: of the time error (any field, any step), and of the spatial error
+  // (any field, any output step or the end, relative to the field's scale). What --target-error aims at.
+  double time_error_peak = 0;
+  double space_error_peak() const;
   double wall_seconds = 0;
   double max_abs_ux = 0, max_abs_uy = 0, phi_min = 0, phi_max = 0, uy_corner = 0, ux_corner = 0, phi_center = 0;
   int dim = 2;                            // of the mesh: max_abs_uz and uz_corner are results in 3D only

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <tuple>
 
 #include "assembly/error.hpp"
 #include "models/scene/memory_estimate.hpp"
@@ -15,7 +16,7 @@ namespace {
 
 constexpr double kMaxDofs = 4e6;
 
-// The largest estimates of a pilot's final state, over the foundations run.
+// The largest estimates of a pilot over its run, over the foundations run.
 struct PilotResult {
   int dofs = 0;
   double space = 0, time = 0;
@@ -53,8 +54,8 @@ PilotResult run_pilot(const Scene& scene, const std::vector<std::string>& only, 
     require(r.completed, "target error: the pilot run (", p.description(), ") of the ", f.name,
             " foundation did not complete: ", r.message);
     worst.dofs = r.ndof;
-    for (const auto& [field, relative] : r.space_error) worst.space = std::max(worst.space, relative);
-    for (const FieldTimeError& e : r.time_error) worst.time = std::max(worst.time, e.global);
+    worst.space = std::max(worst.space, r.space_error_peak());
+    worst.time = std::max(worst.time, r.time_error_peak);
   }
   return worst;
 }
@@ -66,7 +67,8 @@ int scheme_order(const std::string& scheme) { return scheme == "bdf2" ? 2 : 1; }
 std::vector<std::string> TargetErrorChoice::overrides() const {
   std::vector<std::string> o = {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny)};
   if (nz > 0) o.push_back("mesh.nz=" + std::to_string(nz));
-  o.insert(o.end(), {"mesh.order=" + std::to_string(order), "time.scheme=" + scheme, "time.steps=" + std::to_string(steps)});
+  o.insert(o.end(), {"mesh.order=" + std::to_string(order), "time.scheme=" + scheme, "time.steps=" + std::to_string(steps),
+                     "output.space_error_every=1"});
   return o;
 }
 
@@ -81,17 +83,31 @@ TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<
   const double target = *scene.target_error;
   const int dim = scene.spec.mesh->dim();
   const int pilot_steps = std::max(20, scene.steps / 5);
-  // Two mesh sizes per order: a quarter of the scene's and half of it.
-  std::vector<Pilot> pilots;
-  for (const auto& [order, scheme] : {std::pair{1, "backward_euler"}, std::pair{2, "bdf2"}})
-    for (double scale : {0.25, 0.5}) {
-      Pilot p{setting(order, scheme, scene.nx, scene.ny, scene.nz, scale, pilot_steps), {}};
-      p.result = run_pilot(scene, only, p.setting);
+  // Per order (P1 with backward Euler, P2 with BDF2): a quarter and half the scene's cells along each
+  // axis with pilot_steps, for the spatial rate; half the cells with twice the steps, for the temporal one.
+  struct PilotSet {
+    Pilot coarse, fine, longer;
+  };
+  std::vector<PilotSet> pilots;
+  for (const auto& [order, scheme] : {std::pair{1, "backward_euler"}, std::pair{2, "bdf2"}}) {
+    PilotSet set;
+    for (auto [pilot, scale, steps] : {std::tuple{&set.coarse, 0.25, pilot_steps}, std::tuple{&set.fine, 0.5, pilot_steps},
+                                       std::tuple{&set.longer, 0.5, 2 * pilot_steps}}) {
+      pilot->setting = setting(order, scheme, scene.nx, scene.ny, scene.nz, scale, steps);
+      pilot->result = run_pilot(scene, only, pilot->setting);
       if (progress)
-        std::printf("  target error pilot: %s: %d dofs, space %.3g, time %.3g\n", p.setting.description().c_str(),
-                    p.result.dofs, p.result.space, p.result.time);
-      pilots.push_back(p);
+        std::printf("  target error pilot: %s: %d dofs, space %.3g, time %.3g\n", pilot->setting.description().c_str(),
+                    pilot->result.dofs, pilot->result.space, pilot->result.time);
     }
+    pilots.push_back(set);
+  }
+  // A rate from two estimates a factor 2 apart, kept within [0.25, the theoretical order]: a singular
+  // solution or order reduction (a stiff contact) gives less than the theory, a pilot on the coarse side
+  // may suggest more.
+  const auto rate_of = [](double coarse, double fine, int theory) {
+    const double measured = coarse > 0 && fine > 0 ? std::log2(coarse / fine) : theory;
+    return std::pair{measured, std::clamp(measured, 0.25, double(theory))};
+  };
 
   // What a candidate may use: solver.max_memory_gib, or what the machine has (the scene's own check).
   double memory = available_memory_bytes();
@@ -104,27 +120,29 @@ TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<
   closest.predicted_seconds = std::numeric_limits<double>::infinity();
   double closest_error = std::numeric_limits<double>::infinity();
   std::string rates;
-  for (int order : {1, 2}) {
-    const Pilot& coarse = pilots[size_t(2 * (order - 1))];
-    const Pilot& fine = pilots[size_t(2 * (order - 1) + 1)];
-    // Cells per axis doubled between the pilots: the rate of the spatial estimate in the cell size.
-    const double measured = coarse.result.space > 0 && fine.result.space > 0 ? std::log2(coarse.result.space / fine.result.space) : order;
-    const double rate = std::clamp(measured, 0.25, double(order));
-    rates += message(rates.empty() ? "" : "; ", "P", order, " space ", coarse.result.space, " -> ", fine.result.space,
-                     " (rate ", measured, ", used ", rate, ")");
-    for (const std::string scheme : {"backward_euler", "bdf2"}) {
-      // The time estimate of this scheme: from the pilots that ran it (P1 backward Euler, P2 BDF2).
-      const Pilot& timed = pilots[scheme == "bdf2" ? 3 : 1];
+  for (const PilotSet& set : pilots) {
+    const int order = set.fine.setting.order;
+    const Pilot& fine = set.fine;
+    const auto [measured_space, space_rate] = rate_of(set.coarse.result.space, fine.result.space, order);
+    rates += message(rates.empty() ? "" : "; ", "P", order, " space ", set.coarse.result.space, " -> ", fine.result.space,
+                     " (rate ", measured_space, ", used ", space_rate, ")");
+    for (const PilotSet& timed : pilots) {  // each scheme's time error, from the pilots that ran it
+      const std::string& scheme = timed.fine.setting.scheme;
+      const auto [measured_time, time_rate] =
+          rate_of(timed.fine.result.time, timed.longer.result.time, scheme_order(scheme));
+      if (order == 1)
+        rates += message("; ", scheme, " time ", timed.fine.result.time, " -> ", timed.longer.result.time, " (rate ",
+                         measured_time, ", used ", time_rate, ")");
       for (int j = -2; j <= 10; ++j) {
         const double factor = std::pow(2.0, j / 2.0);  // over the finer pilot's mesh, 1/2 to 32
-        const double space = fine.result.space * std::pow(factor, -rate);
+        const double space = fine.result.space * std::pow(factor, -space_rate);
         const double dofs = fine.result.dofs * std::pow(factor, dim);
         const int cells[3] = {scaled(fine.setting.nx, factor), scaled(fine.setting.ny, factor), scaled(fine.setting.nz, factor)};
         if (dofs > kMaxDofs || (memory > 0 && estimate_structured_run(dim, cells, order).bytes > memory)) break;
         for (int k = 0; k <= 22; ++k) {
           // From half the pilots' steps up: the time model is not trusted far below what was measured.
           const int steps = int(std::lround(std::max(10, pilot_steps / 2) * std::pow(2.0, k / 2.0)));
-          const double time = timed.result.time * std::pow(double(pilot_steps) / steps, scheme_order(scheme));
+          const double time = timed.longer.result.time * std::pow(2.0 * pilot_steps / steps, time_rate);
           const double seconds = estimate_run_seconds(dim, dofs, steps).seconds;
           TargetErrorChoice c = setting(order, scheme, fine.setting.nx, fine.setting.ny, fine.setting.nz, factor, steps);
           c.target = target;
@@ -146,8 +164,7 @@ TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<
       }
     }
   }
-  const std::string pilots_text = message("pilots with ", pilot_steps, " steps: ", rates, "; time: backward Euler ",
-                                          pilots[1].result.time, ", BDF2 ", pilots[3].result.time);
+  const std::string pilots_text = message("pilots with ", pilot_steps, " and ", 2 * pilot_steps, " steps: ", rates);
   require(std::isfinite(best_seconds), "target error ", target, ": no setting that fits in memory (and ", kMaxDofs,
           " dofs) is predicted to reach it; the closest, ", closest.description(), ", is predicted to reach ",
           closest.predicted_space + closest.predicted_time, " (space ", closest.predicted_space, " + time ",

@@ -14,7 +14,8 @@ struct TargetErrorChoice {
   int dofs = 0;  // predicted
   double predicted_space = 0, predicted_time = 0, predicted_seconds = 0;
   std::string explanation;  // the pilots' figures, the rates and the choice, for the user
-  // The scene overrides that make the choice: mesh.nx, ny (nz), mesh.order, time.scheme, time.steps.
+  // The scene overrides that make the choice: mesh.nx, ny (nz), mesh.order, time.scheme, time.steps, and
+  // output.space_error_every = 1 (the spatial estimate's peak over the run, not between output steps).
   std::vector<std::string> overrides() const;
   std::string description() const;  // e.g. "P2 on 30 x 10 cells, bdf2, 200 steps"
 };

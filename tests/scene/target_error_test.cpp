@@ -1,6 +1,6 @@
 // The target-error mode (models/scene/target_error.hpp) as a scene user meets it: the key read and its
-// bad values and combinations refused with their path, and on the paper's scene, for targets of 10 % and
-// 1 %, a choice predicted to reach the target whose run's own estimates land near it: at most 15 % over,
+// bad values and combinations refused with their path, and on the paper's scene, for a target of 10 %, a
+// choice predicted to reach the target whose run's own estimates land near it: at most 15 % over,
 // and not below a third of it (a choice far below would be paying for accuracy nobody asked for); and
 // an unreachable target refused.
 #include <gtest/gtest.h>
@@ -48,16 +48,16 @@ TEST_P(TargetErrorRun, ReachesTheTargetWithoutOverpaying) {
   FoundationRun run(chosen, find_foundation(chosen, "conductive"));
   const FoundationRunResult r = run.run("", false);
   ASSERT_TRUE(r.completed) << r.message;
-  double space = 0, time = 0;
-  for (const auto& [field, relative] : r.space_error) space = std::max(space, relative);
-  for (const FieldTimeError& e : r.time_error) time = std::max(time, e.global);
+  const double space = r.space_error_peak(), time = r.time_error_peak;
   std::printf("target %g: %s, %d dofs; estimated %.4g (space %.4g + time %.4g), predicted %.4g + %.4g\n", target,
               c.description().c_str(), r.ndof, space + time, space, time, c.predicted_space, c.predicted_time);
   EXPECT_LE(space + time, 1.15 * target);
   EXPECT_GE(space + time, target / 3);
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, TargetErrorRun, ::testing::Values(0.1, 0.01));
+// 1 % takes some 10 minutes on the paper scene (BDF2 reads order 0.7 on its transient, so the steps grow
+// as the target falls): benchmarks/speed_accuracy_study.cpp's axis "target" measures it.
+INSTANTIATE_TEST_SUITE_P(Targets, TargetErrorRun, ::testing::Values(0.1));
 
 // A target no setting that fits can reach is refused before any long run, with the closest setting and
 // what it would reach: a 1 GiB budget holds P2 up to some 100 000 dofs, far from 1e-4 on this scene.
