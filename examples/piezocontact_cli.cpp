@@ -33,7 +33,6 @@
 #include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_modes.hpp"
 #include "models/scene/scene_runner.hpp"
-#include "models/scene/target_error.hpp"
 #include "models/scene/time_estimate.hpp"
 
 namespace {
@@ -202,14 +201,6 @@ int main(int argc, char** argv) {
       if (!known) throw pc::Error("--only: the scene has no foundation '" + name + "'");
     }
     pc::install_interrupt_handlers();  // SIGINT, SIGTERM: stop after the current step, results written
-    if (scene.target_error) {
-      const bool progress = options.progress && pc::processes::is_writer();
-      if (progress) std::printf("target error %g: pilot runs\n", *scene.target_error);
-      const pc::Scene chosen = pc::scene_for_target_error(scene, options.only, progress);
-      if (pc::processes::is_writer())
-        std::printf("target error %g: %s\n", *scene.target_error, chosen.target_choice->explanation.c_str());
-      return pc::run_scene(chosen, options) ? 0 : 1;
-    }
     return pc::run_scene(scene, options) ? 0 : 1;
   } catch (const pc::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

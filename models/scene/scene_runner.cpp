@@ -28,6 +28,7 @@
 #include "models/scene/mesh_summary.hpp"
 #include "models/scene/run_manifest.hpp"
 #include "models/scene/run_timing.hpp"
+#include "models/scene/target_error.hpp"
 #include "models/scene/time_estimate.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/contact_resultant.hpp"
@@ -853,6 +854,14 @@ const char* const sweep_part = "sweep_phi_f";
 
 bool run_scene(const Scene& scene, const SceneRunOptions& options) {
   set_assembly_threads(scene.threads);  // 0: PIEZOCONTACT_THREADS or the cores
+  if (scene.target_error && !scene.target_choice) {  // the target-error mode: choose, then run the choice
+    const bool talk = options.progress && processes::is_writer();
+    if (talk) std::printf("target error %g: pilot runs\n", *scene.target_error);
+    const Scene chosen = scene_for_target_error(scene, options.only, talk);
+    if (processes::is_writer())
+      std::printf("target error %g: %s\n", *scene.target_error, chosen.target_choice->explanation.c_str());
+    return run_scene(chosen, options);
+  }
   bool all_completed = true;
   std::string stop_reason;
   const std::string& out = options.output_directory;

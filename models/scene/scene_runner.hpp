@@ -106,7 +106,8 @@ class FoundationRun {
 FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& directory,
                                    bool progress, int steps_override = 0);
 
-// Runs the scene as SceneRunOptions say; returns false if a run did not complete. A non-empty output
+// Runs the scene as SceneRunOptions say; returns false if a run did not complete. A scene with a
+// target_error is first given its discretisation (models/scene/target_error.hpp: pilots, then the choice). A non-empty output
 // directory is locked (OutputDirectoryLock) before the first step. A run whose state or results become
 // non-finite stops there: nothing non-finite is written, and its summary.json says completed = false
 // with the message. The reason a run stopped is printed on stderr whatever options.progress says.
