@@ -4,9 +4,12 @@
 #include <array>
 #include <cmath>
 
+#include <Eigen/LU>
 #include <Eigen/QR>
 
 #include "assembly/error.hpp"
+#include "assembly/cell_geometry.hpp"
+#include "assembly/quadrature.hpp"
 #include "assembly/region_geometry.hpp"
 #include "bricks/voigt.hpp"
 
@@ -19,6 +22,22 @@ std::array<double, 3> reference_centre(Shape shape) {
   for (int k = 0; k < num_vertices(shape); ++k)
     for (int d = 0; d < 3; ++d) centre[d] += reference_vertex(shape, k)[d] / num_vertices(shape);
   return centre;
+}
+
+// The physical gradients of a cell's shape functions at a reference point: nloc x dim values.
+void shape_gradients_in_cell(const FESpace& space, int cell, const double* xi, double* out) {
+  const int dim = space.mesh().dim(), nloc = space.element().num_dofs();
+  double J[9], dN[27 * 3];
+  cell_jacobian(space.mesh(), cell, xi, J);
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3>> jacobian(J, dim, dim);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3> inverse = jacobian.inverse();
+  space.element().gradients(xi, dN);
+  for (int i = 0; i < nloc; ++i)
+    for (int d = 0; d < dim; ++d) {
+      double g = 0;  // d N_i / d x_d = sum_k d N_i / d xi_k * d xi_k / d x_d
+      for (int k = 0; k < dim; ++k) g += dN[i * dim + k] * inverse(k, d);
+      out[i * dim + d] = g;
+    }
 }
 
 // Nodal averaging: at each node, the cells' gradients there weighted by the cells' measures. Width =
@@ -45,19 +64,56 @@ std::vector<double> averaged_nodal_gradients(const FESpace& space, const Eigen::
   return sum;
 }
 
+// q(G): the Voigt strain of a gradient, or the gradient itself.
+void measured(GradientMeasure measure, int dim, int components, const double* grad, double* q) {
+  if (measure == GradientMeasure::Strain)
+    strain_from_gradient(dim, grad, q);
+  else
+    std::copy(grad, grad + components * dim, q);
+}
+
+// q^T W q, W applied to each component's block for a gradient.
+double weighted_square(GradientMeasure measure, const Eigen::MatrixXd& W, int blocks, const double* q) {
+  const Eigen::Index n = W.rows();
+  double sum = 0;  // written out: W * x would allocate a temporary at every quadrature point
+  for (int b = 0; b < (measure == GradientMeasure::Strain ? 1 : blocks); ++b) {
+    const double* x = q + b * n;
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index j = 0; j < n; ++j) sum += x[i] * W(i, j) * x[j];
+  }
+  return sum;
+}
+
+// The checks both norms make; returns the width of q.
+int check_measure(const std::string& what, const FESpace& space, const Eigen::VectorXd& coefficients,
+                  GradientMeasure measure, const Eigen::MatrixXd& weight) {
+  const int dim = space.mesh().dim(), components = space.num_components();
+  require(coefficients.size() == space.num_dofs(), what, ": ", coefficients.size(), " coefficients, the space has ",
+          space.num_dofs(), " dofs");
+  require(measure == GradientMeasure::Gradient || components == dim, what, ": a strain needs ", dim,
+          " components, the field has ", components);
+  const int n = measure == GradientMeasure::Strain ? voigt_size(dim) : dim;
+  require(weight.rows() == n && weight.cols() == n, what, ": the weight is ", weight.rows(), " x ", weight.cols(),
+          ", the ", measure == GradientMeasure::Strain ? "strain" : "gradient", " needs ", n, " x ", n);
+  return measure == GradientMeasure::Strain ? n : components * dim;
+}
+
+}  // namespace
+
 // Superconvergent patch recovery of a first-order field (Zienkiewicz and Zhu, 1992). The gradient at a
 // cell's centre is superconvergent; around each node not on the domain's boundary, a linear polynomial
 // is fitted to the centre gradients of its cells by least squares, and its value at the node is the
 // recovered one. A boundary node, whose patch is one-sided, takes the mean of the fits of the interior
 // nodes it shares a cell with, evaluated at it (its own fit, or the nodal average, if it has none): the
 // nodal average of a boundary node is only first order, and it is where contact and clamps put the error.
-std::vector<double> patch_recovered_nodal_gradients(const FESpace& space, const Eigen::VectorXd& f) {
+// The fit's coefficients are M G (M = P^+, G the patch's centre gradients), so a fit evaluated anywhere is
+// a row of weights on the patch's cells, the same for every gradient component: those rows are kept.
+SpaceErrorEstimator::SpaceErrorEstimator(const FESpace& space) : space_(space) {
+  if (space.order() != 1) return;
   const Mesh& mesh = space.mesh();
-  const int dim = mesh.dim(), width = space.num_components() * dim, n = space.num_scalar_dofs();
+  const int dim = mesh.dim(), n = space.num_scalar_dofs();
   const Shape shape = mesh.cell_shape();
-  const auto centre = reference_centre(shape);
   std::vector<std::vector<int>> patch(n);
-  std::vector<double> centre_gradient(size_t(mesh.num_cells()) * width);
   std::vector<std::array<double, 3>> centre_point(mesh.num_cells());
   // A face of the space's domain belongs to one of its cells: its dofs are the boundary's. Faces as sorted
   // vertex dofs (padded with -1), sorted, so that a face seen once is a run of one.
@@ -66,7 +122,6 @@ std::vector<double> patch_recovered_nodal_gradients(const FESpace& space, const 
     if (!space.has_cell(cell)) continue;
     const auto dofs = space.cell_scalar_dofs(cell);
     for (int dof : dofs) patch[dof].push_back(cell);
-    space.gradient_in_cell(f, cell, centre.data(), centre_gradient.data() + size_t(cell) * width);
     for (int k = 0; k < num_vertices(shape); ++k)
       for (int d = 0; d < dim; ++d) centre_point[cell][d] += mesh.node(mesh.cell(cell)[k])[d] / num_vertices(shape);
     for (int face = 0; face < num_faces(shape); ++face) {
@@ -88,10 +143,9 @@ std::vector<double> patch_recovered_nodal_gradients(const FESpace& space, const 
     i = j;
   }
 
-  // The fit around a node: coefficients ((dim + 1) x width) of a + b . (x - x_node) / h, or none when
-  // its patch has too few cells or they lie so that the fit is not unique.
-  using Fit = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
-  std::vector<Fit> fits(n);
+  // The fit around a node, as M ((dim + 1) x patch cells) for a + b . (x - x_node) / h, or none when its
+  // patch has too few cells or they lie so that the fit is not unique.
+  std::vector<Eigen::MatrixXd> fits(n);
   std::vector<double> patch_size(n, 0.0);
   const auto at = [&](int dof) { return space.scalar_dof_point(dof); };
   for (int node = 0; node < n; ++node) {
@@ -101,137 +155,172 @@ std::vector<double> patch_recovered_nodal_gradients(const FESpace& space, const 
     double h = 0;
     for (int cell : cells)
       for (int d = 0; d < dim; ++d) h = std::max(h, std::abs(centre_point[cell][d] - x[d]));
-    Eigen::MatrixXd P(cells.size(), dim + 1), G(cells.size(), width);
+    Eigen::MatrixXd P(cells.size(), dim + 1);
     for (size_t r = 0; r < cells.size(); ++r) {
       P(Eigen::Index(r), 0) = 1;
       for (int d = 0; d < dim; ++d) P(Eigen::Index(r), d + 1) = (centre_point[cells[r]][d] - x[d]) / h;
-      for (int a = 0; a < width; ++a) G(Eigen::Index(r), a) = centre_gradient[size_t(cells[r]) * width + a];
     }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(P);
     if (qr.rank() < dim + 1) continue;
-    fits[node] = qr.solve(G);
+    fits[node] = qr.solve(Eigen::MatrixXd::Identity(P.rows(), P.rows()));
     patch_size[node] = h;
   }
-  const auto evaluate = [&](int node, const std::array<double, 3>& x, double* out) {
-    for (int a = 0; a < width; ++a) {
-      double value = fits[node](0, a);
-      for (int d = 0; d < dim; ++d) value += fits[node](d + 1, a) * (x[d] - at(node)[d]) / patch_size[node];
-      out[a] = value;
+
+  const auto centre = reference_centre(shape);
+  const int nloc = space.element().num_dofs();
+  centre_shape_gradients_.assign(size_t(mesh.num_cells()) * nloc * dim, 0.0);
+  for (int cell = 0; cell < mesh.num_cells(); ++cell)
+    if (space.has_cell(cell))
+      shape_gradients_in_cell(space, cell, centre.data(), centre_shape_gradients_.data() + size_t(cell) * nloc * dim);
+
+  start_.assign(1, 0);
+  std::vector<std::pair<int, double>> row;  // (cell, weight) of the node being recovered
+  const auto add_fit_at = [&](int fitted, const std::array<double, 3>& x, double share) {
+    for (Eigen::Index r = 0; r < fits[fitted].cols(); ++r) {
+      double w = fits[fitted](0, r);
+      for (int d = 0; d < dim; ++d) w += fits[fitted](d + 1, r) * (x[d] - at(fitted)[d]) / patch_size[fitted];
+      row.emplace_back(patch[fitted][size_t(r)], share * w);
     }
   };
+  for (int node = 0; node < n; ++node) {
+    row.clear();
+    if (!on_boundary[node] && fits[node].size() > 0) {
+      add_fit_at(node, at(node), 1.0);
+    } else {
+      std::vector<int> neighbours;
+      for (int cell : patch[node])
+        for (int other : space.cell_scalar_dofs(cell))
+          if (!on_boundary[other] && fits[other].size() > 0) neighbours.push_back(other);
+      std::sort(neighbours.begin(), neighbours.end());
+      neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+      if (neighbours.empty() && fits[node].size() > 0) neighbours.push_back(node);
+      if (neighbours.empty()) {
+        averaged_.push_back(node);
+        averaged_cells_.push_back(patch[node]);
+      }
+      for (int other : neighbours) add_fit_at(other, at(node), 1.0 / double(neighbours.size()));
+    }
+    // One weight per cell: the neighbours' patches overlap.
+    std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (size_t k = 0; k < row.size(); ++k) {
+      if (k > 0 && row[k].first == cell_.back() && int(cell_.size()) > start_.back()) {
+        weight_.back() += row[k].second;
+        continue;
+      }
+      cell_.push_back(row[k].first);
+      weight_.push_back(row[k].second);
+    }
+    start_.push_back(int(cell_.size()));
+  }
+}
 
+std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const Eigen::VectorXd& f) const {
+  if (space_.order() != 1) return averaged_nodal_gradients(space_, f);
+  const Mesh& mesh = space_.mesh();
+  const int dim = mesh.dim(), components = space_.num_components(), width = components * dim;
+  const int n = space_.num_scalar_dofs(), nloc = space_.element().num_dofs();
+  // The gradient of f in a cell at a point whose shape gradients are dN (nloc x dim).
+  const auto cell_gradient = [&](int cell, const double* dN, double* out) {
+    const auto dofs = space_.cell_scalar_dofs(cell);
+    std::fill(out, out + width, 0.0);
+    for (int i = 0; i < nloc; ++i)
+      for (int c = 0; c < components; ++c) {
+        const double value = f[space_.dof(dofs[i], c)];
+        for (int d = 0; d < dim; ++d) out[c * dim + d] += value * dN[i * dim + d];
+      }
+  };
+  std::vector<double> centre_gradient(size_t(mesh.num_cells()) * width, 0.0);
+  for (int cell = 0; cell < mesh.num_cells(); ++cell)
+    if (space_.has_cell(cell))
+      cell_gradient(cell, centre_shape_gradients_.data() + size_t(cell) * nloc * dim,
+                    centre_gradient.data() + size_t(cell) * width);
   std::vector<double> recovered(size_t(n) * width, 0.0);
-  const std::vector<double> averaged = averaged_nodal_gradients(space, f);
-  std::vector<double> value(width);
   for (int node = 0; node < n; ++node) {
     double* out = recovered.data() + size_t(node) * width;
-    if (!on_boundary[node] && fits[node].size() > 0) {
-      evaluate(node, at(node), out);
-      continue;
+    for (int k = start_[node]; k < start_[node + 1]; ++k) {
+      const double* g = centre_gradient.data() + size_t(cell_[k]) * width;
+      for (int a = 0; a < width; ++a) out[a] += weight_[k] * g[a];
     }
-    std::vector<int> neighbours;
-    for (int cell : patch[node])
-      for (int other : space.cell_scalar_dofs(cell))
-        if (!on_boundary[other] && fits[other].size() > 0) neighbours.push_back(other);
-    std::sort(neighbours.begin(), neighbours.end());
-    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
-    if (neighbours.empty() && fits[node].size() > 0) neighbours.push_back(node);
-    if (neighbours.empty()) {
-      std::copy(averaged.begin() + size_t(node) * width, averaged.begin() + size_t(node + 1) * width, out);
-      continue;
+  }
+  // A node with no fit near it: the average of its cells' gradients there, weighted by their measures.
+  std::vector<double> dN(size_t(nloc) * dim), gradient(width);
+  for (size_t k = 0; k < averaged_.size(); ++k) {
+    const int node = averaged_[k];
+    double* out = recovered.data() + size_t(node) * width;
+    double total = 0;
+    for (int cell : averaged_cells_[k]) {
+      const auto dofs = space_.cell_scalar_dofs(cell);
+      const int local = int(std::find(dofs.begin(), dofs.end(), node) - dofs.begin());
+      shape_gradients_in_cell(space_, cell, space_.element().dof_point(local).data(), dN.data());
+      cell_gradient(cell, dN.data(), gradient.data());
+      const double measure = mesh.cell_measure(cell);
+      for (int a = 0; a < width; ++a) out[a] += measure * gradient[a];
+      total += measure;
     }
-    for (int other : neighbours) {
-      evaluate(other, at(node), value.data());
-      for (int a = 0; a < width; ++a) out[a] += value[a] / double(neighbours.size());
-    }
+    if (total > 0)
+      for (int a = 0; a < width; ++a) out[a] /= total;
   }
   return recovered;
 }
 
-// q(G): the Voigt strain of a gradient, or the gradient itself.
-void measured(GradientMeasure measure, int dim, int components, const double* grad, double* q) {
-  if (measure == GradientMeasure::Strain)
-    strain_from_gradient(dim, grad, q);
-  else
-    std::copy(grad, grad + components * dim, q);
-}
-
-// q^T W q, W applied to each component's block for a gradient.
-double weighted_square(GradientMeasure measure, const Eigen::MatrixXd& W, int blocks, const double* q) {
-  const Eigen::Index n = W.rows();
-  double sum = 0;
-  for (int b = 0; b < (measure == GradientMeasure::Strain ? 1 : blocks); ++b) {
-    const Eigen::Map<const Eigen::VectorXd> x(q + b * n, n);
-    sum += x.dot(W * x);
-  }
-  return sum;
-}
-
-// The checks both norms make; returns the width of q.
-int check_measure(const std::string& what, const FESpace& space, const Eigen::VectorXd& coefficients,
-                  GradientMeasure measure, const Eigen::MatrixXd& weight) {
-  const int dim = space.mesh().dim(), components = space.num_components();
-  require(coefficients.size() == space.num_dofs(), what, ": ", coefficients.size(), " coefficients, the space has ",
-          space.num_dofs(), " dofs");
-  require(measure == GradientMeasure::Gradient || components == dim, what, ": a strain needs ", dim,
-          " components, the field has ", components);
-  const int n = measure == GradientMeasure::Strain ? voigt_size(dim) : dim;
-  require(weight.rows() == n && weight.cols() == n, what, ": the weight is ", weight.rows(), " x ", weight.cols(),
-          ", the ", measure == GradientMeasure::Strain ? "strain" : "gradient", " needs ", n, " x ", n);
-  return measure == GradientMeasure::Strain ? n : components * dim;
-}
-
-}  // namespace
-
-SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace& space,
-                                        const Eigen::VectorXd& coefficients, GradientMeasure measure,
-                                        const Eigen::MatrixXd& weight) {
+SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const Eigen::VectorXd& coefficients,
+                                              GradientMeasure measure, const Eigen::MatrixXd& weight) const {
+  const FESpace& space = space_;
   const Mesh& mesh = space.mesh();
   const int dim = mesh.dim(), components = space.num_components();
   const int measured_width = check_measure("space error estimate of '" + field + "'", space, coefficients, measure, weight);
   const int width = components * dim;
-  const std::vector<double> nodal = space.order() == 1 ? patch_recovered_nodal_gradients(space, coefficients)
-                                                        : averaged_nodal_gradients(space, coefficients);
+  const std::vector<double> nodal = recovered_nodal_gradients(coefficients);
   const ReferenceElement& element = space.element();
   // Degree 2p: the squared difference of two gradients of the space's degree p - 1 (p on a Q cell's
   // coordinates) is integrated exactly on simplices, well enough elsewhere.
-  const RegionGeometry geometry(mesh, "all", 2 * space.order());
-  const auto& points = geometry.reference_points(-1);
-  std::vector<double> N(element.num_dofs()), dN(size_t(element.num_dofs()) * dim);
+  const QuadratureRule& rule = quadrature(mesh.cell_shape(), 2 * space.order());
+  const int nq = rule.size(), nloc = element.num_dofs();
+  std::vector<double> N(size_t(nq) * nloc), dN(size_t(nq) * nloc * dim);
+  for (int q = 0; q < nq; ++q) {
+    element.values(rule.points[q].data(), N.data() + size_t(q) * nloc);
+    element.gradients(rule.points[q].data(), dN.data() + size_t(q) * nloc * dim);
+  }
   std::vector<double> discrete(width), recovered(width), q_discrete(measured_width), q_recovered(measured_width);
+  std::vector<double> values(size_t(nloc) * components);
 
   SpaceErrorField result;
   result.field = field;
   result.cells.assign(mesh.num_cells(), 0.0);
   double estimate_squared = 0, norm_squared = 0;
-  for (int e = 0; e < geometry.num_elements(); ++e) {
-    const int cell = geometry.cell(e);
+  double J[9];
+  const bool affine = is_simplex(mesh.cell_shape());
+  for (int cell = 0; cell < mesh.num_cells(); ++cell) {
     if (!space.has_cell(cell)) continue;
     const auto dofs = space.cell_scalar_dofs(cell);
-    double cell_squared = 0;
-    for (int q = 0; q < geometry.num_points(); ++q) {
-      const double* xi = points[q].data();
-      element.gradients(xi, dN.data());
-      const double* G = geometry.inverse_jacobian_t(e, q);
-      element.values(xi, N.data());
+    for (size_t i = 0; i < dofs.size(); ++i)
+      for (int c = 0; c < components; ++c) values[i * components + c] = coefficients[space.dof(dofs[i], c)];
+    double cell_squared = 0, det = 0;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3> inverse;
+    for (int q = 0; q < nq; ++q) {
+      if (q == 0 || !affine) {  // a simplex's map is affine: one Jacobian for all its points
+        det = cell_jacobian(mesh, cell, rule.points[q].data(), J);
+        require(det > 0, "space error estimate of '", field, "': cell ", cell, " has det J = ", det, " (inverted cell)");
+        inverse = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3>>(J, dim, dim).inverse();
+      }
+      const double* dNq = dN.data() + size_t(q) * nloc * dim;
+      const double* Nq = N.data() + size_t(q) * nloc;
       std::fill(discrete.begin(), discrete.end(), 0.0);
       std::fill(recovered.begin(), recovered.end(), 0.0);
       for (size_t i = 0; i < dofs.size(); ++i) {
-        for (int c = 0; c < components; ++c) {
-          const double value = coefficients[space.dof(dofs[i], c)];
-          for (int d = 0; d < dim; ++d) {
-            double g = 0;
-            for (int k = 0; k < dim; ++k) g += G[d * dim + k] * dN[i * dim + k];
-            discrete[c * dim + d] += g * value;
-          }
+        for (int d = 0; d < dim; ++d) {
+          double g = 0;  // d N_i / d x_d = sum_k d N_i / d xi_k * d xi_k / d x_d
+          for (int k = 0; k < dim; ++k) g += dNq[i * dim + k] * inverse(k, d);
+          for (int c = 0; c < components; ++c) discrete[c * dim + d] += g * values[i * components + c];
         }
-        for (int a = 0; a < width; ++a) recovered[a] += N[i] * nodal[size_t(dofs[i]) * width + a];
+        for (int a = 0; a < width; ++a) recovered[a] += Nq[i] * nodal[size_t(dofs[i]) * width + a];
       }
+      const double w = rule.weights[q] * det;
       measured(measure, dim, components, discrete.data(), q_discrete.data());
       measured(measure, dim, components, recovered.data(), q_recovered.data());
-      norm_squared += geometry.weight(e, q) * weighted_square(measure, weight, components, q_discrete.data());
+      norm_squared += w * weighted_square(measure, weight, components, q_discrete.data());
       for (int a = 0; a < measured_width; ++a) q_recovered[a] -= q_discrete[a];
-      cell_squared += geometry.weight(e, q) * weighted_square(measure, weight, components, q_recovered.data());
+      cell_squared += w * weighted_square(measure, weight, components, q_recovered.data());
     }
     result.cells[cell] = std::sqrt(std::max(cell_squared, 0.0));
     estimate_squared += cell_squared;
@@ -239,6 +328,12 @@ SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace&
   result.estimate = std::sqrt(std::max(estimate_squared, 0.0));
   result.norm = std::sqrt(std::max(norm_squared, 0.0));
   return result;
+}
+
+SpaceErrorField recovery_error_estimate(const std::string& field, const FESpace& space,
+                                        const Eigen::VectorXd& coefficients, GradientMeasure measure,
+                                        const Eigen::MatrixXd& weight) {
+  return SpaceErrorEstimator(space).estimate(field, coefficients, measure, weight);
 }
 
 double energy_norm_difference(const FESpace& space, const Eigen::VectorXd& f, const PointGradient& g,

@@ -2,17 +2,23 @@
 
 namespace pc {
 
-SpaceErrorEstimate piezo_space_error(const Model& model, const PiezoFieldNames& names) {
+SpaceErrorEstimate PiezoSpaceErrorEstimator::operator()(const Model& model) {
   SpaceErrorEstimate estimate;
   const auto add = [&](const std::string& field, const char* constant, GradientMeasure measure) {
     if (!model.has_field(field) || !model.has_constant(constant)) return;
-    estimate.fields.push_back(
-        recovery_error_estimate(field, model.space(field), model.values(field), measure, model.constant(constant)));
+    const FESpace& space = model.space(field);
+    std::unique_ptr<SpaceErrorEstimator>& estimator = estimators_[&space];
+    if (!estimator) estimator = std::make_unique<SpaceErrorEstimator>(space);
+    estimate.fields.push_back(estimator->estimate(field, model.values(field), measure, model.constant(constant)));
   };
-  add(names.displacement, "B", GradientMeasure::Strain);
-  add(names.velocity, "A", GradientMeasure::Strain);
-  add(names.potential, "beta", GradientMeasure::Gradient);
+  add(names_.displacement, "B", GradientMeasure::Strain);
+  add(names_.velocity, "A", GradientMeasure::Strain);
+  add(names_.potential, "beta", GradientMeasure::Gradient);
   return estimate;
+}
+
+SpaceErrorEstimate piezo_space_error(const Model& model, const PiezoFieldNames& names) {
+  return PiezoSpaceErrorEstimator(names)(model);
 }
 
 }  // namespace pc

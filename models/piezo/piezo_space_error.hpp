@@ -6,12 +6,28 @@
 //   phi  gradient in the permittivity beta (the stored electric energy)
 // The coupling E is left out of the norms: it is indefinite, and each block's own energy already weighs
 // the field's gradient. A field the model does not have is left out, as is one whose constant is missing.
+#include <map>
+#include <memory>
+
 #include "models/model.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/space_error_estimate.hpp"
 
 namespace pc {
 
+// The estimate of a run, which asks it again and again of one model: each space's estimator is built at
+// the first call and kept. The model's spaces must outlive it (a model moved to a new mesh needs a new one).
+class PiezoSpaceErrorEstimator {
+ public:
+  explicit PiezoSpaceErrorEstimator(PiezoFieldNames names = {}) : names_(std::move(names)) {}
+  SpaceErrorEstimate operator()(const Model& model);
+
+ private:
+  PiezoFieldNames names_;
+  std::map<const FESpace*, std::unique_ptr<SpaceErrorEstimator>> estimators_;
+};
+
+// Once, for one state.
 SpaceErrorEstimate piezo_space_error(const Model& model, const PiezoFieldNames& names = {});
 
 }  // namespace pc

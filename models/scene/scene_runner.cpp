@@ -649,7 +649,9 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     NewtonSolver& newton;
     ~ForgetCallback() { newton.set_iteration_callback(nullptr); }
   } forget_callback{newton};
-  // The spatial estimate's largest norm and value per field so far (FoundationRunResult::space_error_peak).
+  // The spatial estimate's largest norm and value per field so far (FoundationRunResult::space_error_peak);
+  // the estimator keeps its patch fits from one call to the next.
+  PiezoSpaceErrorEstimator space_error_of;
   const auto note_space_error = [&](const SpaceErrorEstimate& estimate) {
     for (const SpaceErrorField& f : estimate.fields) {
       result.space_error_scale[f.field] = std::max(result.space_error_scale[f.field], f.norm);
@@ -667,7 +669,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
     require_finite_state(model, when(r));
     for (const FieldTimeError& e : r.time_error.fields) result.time_error_peak = std::max(result.time_error_peak, e.global);
     if (scene.output.space_error_every > 0 && r.step % scene.output.space_error_every == 0)
-      note_space_error(piezo_space_error(model));
+      note_space_error(space_error_of(model));
     timed_output([&] {
       std::vector<double> row = history_row(model, locator, scene.output, r.time, r.newton.iterations);
       row.insert(row.end(), {r.dt, r.time_error.max_local()});
@@ -711,7 +713,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       if (books) books->start(model);
     }
     require_finite_state(model, when(r));
-    SpaceErrorEstimate space_estimate = piezo_space_error(model);
+    SpaceErrorEstimate space_estimate = space_error_of(model);
     note_space_error(space_estimate);
     if (!series) return;
     timed_output([&] {
@@ -805,7 +807,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
   }
   // The final state's spatial error; a state stopped mid-step has none.
   if (!stopped_in_callback) {
-    const SpaceErrorEstimate final_estimate = piezo_space_error(m);
+    const SpaceErrorEstimate final_estimate = space_error_of(m);
     note_space_error(final_estimate);
     for (const SpaceErrorField& f : final_estimate.fields) {
       const double scale = result.space_error_scale[f.field];
