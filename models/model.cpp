@@ -833,6 +833,20 @@ void Model::assemble(bool tangent) {
   for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
 }
 
+Model::ResidualSnapshot Model::residual_snapshot() const {
+  return {residual_, field_residuals_, kept_residuals_, residual_scales_, round_off_scales_};
+}
+
+void Model::restore_residual(ResidualSnapshot snapshot) {
+  require(snapshot.residual.size() == layout().size(), "restore_residual: the snapshot has ",
+          snapshot.residual.size(), " residual entries, the system ", layout().size());
+  residual_ = std::move(snapshot.residual);
+  field_residuals_ = std::move(snapshot.field_residuals);
+  kept_residuals_ = std::move(snapshot.kept_residuals);
+  residual_scales_ = std::move(snapshot.residual_scales);
+  round_off_scales_ = std::move(snapshot.round_off_scales);
+}
+
 std::vector<ProblemBlock> Model::blocks() const {
   const DofLayout& l = layout();
   std::vector<ProblemBlock> blocks;

@@ -131,6 +131,17 @@ class Model : public DataView, public NonlinearProblem {
   const Eigen::VectorXd& brick_residual(int brick, const std::string& unknown) const;
   // The unknowns, in the layout's order.
   std::vector<ProblemBlock> blocks() const override;
+  // What assemble(false) leaves behind (the residual, its per-field and kept-brick pieces, its scales),
+  // kept so that a caller who assembles at perturbed values (a finite difference) can put the last
+  // assembly's back without assembling again. Valid only while the values it was assembled at stand.
+  struct ResidualSnapshot {
+    Eigen::VectorXd residual;
+    std::map<std::string, Eigen::VectorXd> field_residuals;
+    std::map<int, std::map<std::string, Eigen::VectorXd>> kept_residuals;
+    std::map<std::string, double> residual_scales, round_off_scales;
+  };
+  ResidualSnapshot residual_snapshot() const;
+  void restore_residual(ResidualSnapshot snapshot);
   // Per unknown, the norm (on free dofs) of the largest single brick contribution to the last residual:
   // the scale of the forces that balance, Newton's reference.
   std::vector<double> residual_scales() const override;

@@ -222,7 +222,9 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
 
   // The response of the step's solution to a history perturbation P, linearised: J dx = -(dR/dh) P, the
   // derivative taken by a difference of residuals (exact for the linear bricks).
-  const Eigen::VectorXd converged_residual = model.residual();
+  // The converged assembly is kept whole, to be put back after the perturbed ones (not assembled again).
+  Model::ResidualSnapshot converged = model.residual_snapshot();
+  const Eigen::VectorXd& converged_residual = converged.residual;
   const DofLayout& layout = model.layout();
   const auto response = [&](const FieldVectors& perturbation) {
     double largest_history = 0, largest_perturbation = 0;
@@ -263,7 +265,7 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
     from_history = response(carried);
     for (const auto& [f, d] : from_history) from_step[f] = Eigen::VectorXd::Zero(d.size());
   }
-  model.assemble(false);  // the converged residual again, for what reads it after the step
+  model.restore_residual(std::move(converged));  // for what reads the residual after the step
 
   Propagated out;
   for (const std::string& f : fields_) {

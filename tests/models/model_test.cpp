@@ -123,6 +123,40 @@ TEST(Model, CachedAndForcedAssemblyAreIdentical) {
   EXPECT_LT((dense(bulk.model->jacobian()) - cached_jacobian).norm(), 1e-14 * cached_jacobian.norm());
 }
 
+// A residual snapshot put back after an assembly at perturbed values (the time estimate's finite
+// difference) gives what assembling again at the restored values gives: the residual, each field's piece,
+// a kept brick's and the scales Newton measures by, bitwise.
+TEST(Model, ARestoredResidualSnapshotIsTheAssemblyAtTheRestoredValues) {
+  Bulk bulk;
+  Model& m = *bulk.model;
+  m.keep_brick_residuals({bulk.traction, bulk.elasticity});
+  bulk.scheme.begin_step(m, 0.01);
+  m.set_values("v", Eigen::VectorXd::Random(m.space("v").num_dofs()));
+  m.apply_dirichlet();
+  m.assemble(false);
+  Model::ResidualSnapshot kept = m.residual_snapshot();
+  const Eigen::VectorXd u_prev = m.values("u_prev");
+  m.set_values("u_prev", u_prev + 1e-3 * Eigen::VectorXd::Random(u_prev.size()));
+  m.assemble(false);
+  ASSERT_GT((m.residual() - kept.residual).norm(), 0.0);  // the perturbation reached the residual
+  m.restore_residual(std::move(kept));
+  const Eigen::VectorXd restored = m.residual(), restored_v = m.field_residual("v"),
+                        restored_elastic = m.brick_residual(bulk.elasticity, "v");
+  const std::vector<double> restored_scales = m.residual_scales(), restored_round_off = m.round_off_scales();
+  m.set_values("u_prev", u_prev);
+  m.assemble(false);
+  EXPECT_EQ(restored, m.residual());
+  EXPECT_EQ(restored_v, m.field_residual("v"));
+  EXPECT_EQ(restored_elastic, m.brick_residual(bulk.elasticity, "v"));
+  EXPECT_EQ(restored_scales, m.residual_scales());
+  EXPECT_EQ(restored_round_off, m.round_off_scales());
+
+  Model::ResidualSnapshot wrong;
+  wrong.residual = Eigen::VectorXd::Zero(3);
+  EXPECT_THAT([&] { m.restore_residual(std::move(wrong)); },
+              ::testing::ThrowsMessage<Error>(HasSubstr("the snapshot has 3 residual entries")));
+}
+
 // The Jacobian's share of assembly: the linear bricks' tangents (whichever assembly needs them first, since
 // their residual is a mat-vec with them) and the Jacobian's sum; a later residual alone adds nothing. Newton
 // reports it within its assembly time.
