@@ -138,18 +138,29 @@ void FESpace::gradient_in_cell(const Eigen::VectorXd& coefficients, int cell, co
   require(coefficients.size() == num_dofs(), "FESpace: coefficient vector has ", coefficients.size(),
           " entries, the space has ", num_dofs(), " dofs");
   const int dim = mesh_->dim();
+  double dN[27 * 3];
+  shape_gradients_in_cell(cell, xi, dN);
+  const auto dofs = cell_scalar_dofs(cell);
+  for (int c = 0; c < num_components_; ++c)
+    for (int d = 0; d < dim; ++d) {
+      double g = 0;
+      for (int i = 0; i < int(dofs.size()); ++i) g += coefficients[dof(dofs[i], c)] * dN[i * dim + d];
+      out[c * dim + d] = g;
+    }
+}
+
+void FESpace::shape_gradients_in_cell(int cell, const double* xi, double* out) const {
+  const int dim = mesh_->dim(), nloc = element_->num_dofs();
   double J[9], dN[27 * 3];
   cell_jacobian(*mesh_, cell, xi, J);
   const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3>> jacobian(J, dim, dim);
   const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3> inverse = jacobian.inverse();
   element_->gradients(xi, dN);
-  const auto dofs = cell_scalar_dofs(cell);
-  for (int c = 0; c < num_components_; ++c)
+  for (int i = 0; i < nloc; ++i)
     for (int d = 0; d < dim; ++d) {
-      double g = 0;  // d f / d x_d = sum_j d f / d xi_j * d xi_j / d x_d
-      for (int i = 0; i < int(dofs.size()); ++i)
-        for (int j = 0; j < dim; ++j) g += coefficients[dof(dofs[i], c)] * dN[i * dim + j] * inverse(j, d);
-      out[c * dim + d] = g;
+      double g = 0;  // d N_i / d x_d = sum_k d N_i / d xi_k * d xi_k / d x_d
+      for (int k = 0; k < dim; ++k) g += dN[i * dim + k] * inverse(k, d);
+      out[i * dim + d] = g;
     }
 }
 

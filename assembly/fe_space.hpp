@@ -49,6 +49,8 @@ class FESpace {
   void evaluate_in_cell(const Eigen::VectorXd& coefficients, int cell, const double* xi, double* out) const;
   // Physical gradient of every component there: out[c * dim + d] = d f_c / d x_d.
   void gradient_in_cell(const Eigen::VectorXd& coefficients, int cell, const double* xi, double* out) const;
+  // Physical gradients of the cell's scalar shape functions there: out[i * dim + d] = d N_i / d x_d.
+  void shape_gradients_in_cell(int cell, const double* xi, double* out) const;
 
  private:
   std::shared_ptr<const Mesh> mesh_;

@@ -24,22 +24,6 @@ std::array<double, 3> reference_centre(Shape shape) {
   return centre;
 }
 
-// The physical gradients of a cell's shape functions at a reference point: nloc x dim values.
-void shape_gradients_in_cell(const FESpace& space, int cell, const double* xi, double* out) {
-  const int dim = space.mesh().dim(), nloc = space.element().num_dofs();
-  double J[9], dN[27 * 3];
-  cell_jacobian(space.mesh(), cell, xi, J);
-  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3>> jacobian(J, dim, dim);
-  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3> inverse = jacobian.inverse();
-  space.element().gradients(xi, dN);
-  for (int i = 0; i < nloc; ++i)
-    for (int d = 0; d < dim; ++d) {
-      double g = 0;  // d N_i / d x_d = sum_k d N_i / d xi_k * d xi_k / d x_d
-      for (int k = 0; k < dim; ++k) g += dN[i * dim + k] * inverse(k, d);
-      out[i * dim + d] = g;
-    }
-}
-
 // Nodal averaging: at each node, the cells' gradients there weighted by the cells' measures. Width =
 // components * dim values per scalar dof.
 std::vector<double> averaged_nodal_gradients(const FESpace& space, const Eigen::VectorXd& f) {
@@ -171,7 +155,7 @@ SpaceErrorEstimator::SpaceErrorEstimator(const FESpace& space) : space_(space) {
   centre_shape_gradients_.assign(size_t(mesh.num_cells()) * nloc * dim, 0.0);
   for (int cell = 0; cell < mesh.num_cells(); ++cell)
     if (space.has_cell(cell))
-      shape_gradients_in_cell(space, cell, centre.data(), centre_shape_gradients_.data() + size_t(cell) * nloc * dim);
+      space.shape_gradients_in_cell(cell, centre.data(), centre_shape_gradients_.data() + size_t(cell) * nloc * dim);
 
   start_.assign(1, 0);
   std::vector<std::pair<int, double>> row;  // (cell, weight) of the node being recovered
@@ -251,7 +235,7 @@ std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const Eigen::
     for (int cell : averaged_cells_[k]) {
       const auto dofs = space_.cell_scalar_dofs(cell);
       const int local = int(std::find(dofs.begin(), dofs.end(), node) - dofs.begin());
-      shape_gradients_in_cell(space_, cell, space_.element().dof_point(local).data(), dN.data());
+      space_.shape_gradients_in_cell(cell, space_.element().dof_point(local).data(), dN.data());
       cell_gradient(cell, dN.data(), gradient.data());
       const double measure = mesh.cell_measure(cell);
       for (int a = 0; a < width; ++a) out[a] += measure * gradient[a];
