@@ -12,7 +12,7 @@ install(TARGETS piezocontact piezocontact_assembly piezocontact_bricks piezocont
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 foreach(dir assembly bricks models)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/piezocontact/${dir}
-    FILES_MATCHING PATTERN "*.hpp")
+    FILES_MATCHING PATTERN "*.hpp" PATTERN "gmsh_module" EXCLUDE)  # gmsh_module/: a module, no headers
 endforeach()
 install(EXPORT piezocontactTargets NAMESPACE piezocontact::
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/piezocontact)

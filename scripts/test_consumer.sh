@@ -9,6 +9,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cmake --install build/release --prefix "$work/prefix" >/dev/null
 cp -r examples/consumer "$work/consumer"
-cmake -S "$work/consumer" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+cmake -S "$work/consumer" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" \
+  -DPIEZOCONTACT_SCENES="$PWD/scenes" >/dev/null
 cmake --build "$work/build"
 ctest --test-dir "$work/build" --output-on-failure
