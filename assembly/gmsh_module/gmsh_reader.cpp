@@ -454,8 +454,6 @@ Mesh read_msh(const std::string& msh, const GmshOptions& options) {
   return mesh;
 }
 
-}  // namespace
-
 Mesh import_gmsh_in_module(const std::string& path, const GmshOptions& options) {
   require(std::filesystem::exists(path), "gmsh: cannot open '", path, "': no such file");
   require(std::filesystem::is_regular_file(path), "gmsh: cannot open '", path, "': not a regular file");
@@ -492,6 +490,7 @@ Mesh import_gmsh_in_module(const std::string& path, const GmshOptions& options) 
   }
 }
 
+}  // namespace
 }  // namespace pc
 
 // The module's one entry point, looked up by name (unmangled) by the loader.
