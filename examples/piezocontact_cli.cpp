@@ -21,6 +21,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <new>
 #include <string>
 #include <type_traits>
@@ -113,7 +116,22 @@ int failed() {
   return 1;
 }
 
+// glibc raises its mmap threshold to the size of each large block that is freed (up to 32 MiB), after
+// which blocks of a run's size (patterns, matrices, MUMPS's work arrays) come from the heap and stay in
+// the process once freed, fragmenting it; fixed thresholds hand them back to the system. Measured on
+// the paper's scene at 240 x 80: peak resident memory 233 -> 213 MiB, at no measurable cost in time
+// (the extra page faults are those of the set-up's own allocations, about 30 000). Blocks under 4 MiB
+// (a field's vectors) keep coming from the heap, whose top is trimmed only past 8 MiB free, so that a
+// step's vectors are not handed back and faulted in again.
+void return_large_blocks_to_the_system() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 4 << 20);
+  mallopt(M_TRIM_THRESHOLD, 8 << 20);
+#endif
+}
+
 int main(int argc, char** argv) {
+  return_large_blocks_to_the_system();
   pc::processes::initialize(&argc, &argv);  // under mpirun; nothing on one process
   if (argc >= 2 && (std::string(argv[1]) == "list" || std::string(argv[1]) == "describe")) {
     try {

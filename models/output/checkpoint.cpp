@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <string_view>
 
 #include "assembly/atomic_file.hpp"
 #include "assembly/content_hash.hpp"
@@ -15,22 +16,40 @@ namespace {
 
 constexpr char magic[8] = {'P', 'C', 'C', 'H', 'K', 'P', 'T', '1'};
 
-std::uint64_t checksum(const char* data, size_t size) { return content_hash(std::string_view(data, size)); }
+// Writes the file's bytes to a stream as they come, hashing them on the way, so that writing a checkpoint
+// holds no copy of it in memory (a buffer of the whole file grew to twice its size while the run's
+// factors were alive, and was the largest allocation at the run's peak).
+class Writer {
+ public:
+  explicit Writer(std::ostream& out) : out_(out) {}
+  void bytes(const char* data, size_t size) {
+    if (size == 0) return;
+    out_.write(data, std::streamsize(size));
+    hash_ = content_hash(std::string_view(data, size), hash_);
+  }
+  template <class T>
+  void put(const T& value) {
+    bytes(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  void text(const std::string& text) {
+    put(std::uint64_t(text.size()));
+    bytes(text.data(), text.size());
+  }
+  // The checksum of everything written, which ends the file.
+  void finish() {
+    const std::uint64_t sum = hash_;
+    out_.write(reinterpret_cast<const char*>(&sum), sizeof sum);
+  }
 
-template <class T>
-void put(std::string& out, const T& value) {
-  out.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-void put_text(std::string& out, const std::string& text) {
-  put(out, std::uint64_t(text.size()));
-  out += text;
-}
+ private:
+  std::ostream& out_;
+  std::uint64_t hash_ = content_hash({});
+};
 
 // Reads the file's bytes in order; every read is bounds-checked, so a truncated file is an error.
 class Reader {
  public:
-  Reader(const std::string& path, const std::string& bytes) : path_(path), bytes_(bytes) {}
+  Reader(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes) {}
   template <class T>
   T get() {
     T value;
@@ -60,7 +79,7 @@ class Reader {
     return p;
   }
   const std::string& path_;
-  const std::string& bytes_;
+  std::string_view bytes_;
   size_t at_ = 0;
 };
 
@@ -85,25 +104,27 @@ const std::string& Checkpoint::text(const std::string& name) const {
 }
 
 void write_checkpoint(const std::string& path, const Checkpoint& checkpoint) {
-  std::string bytes(magic, sizeof magic);
-  put(bytes, std::uint64_t(checkpoint.numbers.size()));
-  for (const auto& [name, value] : checkpoint.numbers) {
-    put_text(bytes, name);
-    put(bytes, value);
-  }
-  put(bytes, std::uint64_t(checkpoint.vectors.size()));
-  for (const auto& [name, values] : checkpoint.vectors) {
-    put_text(bytes, name);
-    put(bytes, std::uint64_t(values.size()));
-    if (values.size() > 0) bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
-  }
-  put(bytes, std::uint64_t(checkpoint.texts.size()));
-  for (const auto& [name, text] : checkpoint.texts) {
-    put_text(bytes, name);
-    put_text(bytes, text);
-  }
-  put(bytes, checksum(bytes.data(), bytes.size()));
-  write_atomically(path, "checkpoint", [&](std::ostream& out) { out.write(bytes.data(), std::streamsize(bytes.size())); });
+  write_atomically(path, "checkpoint", [&](std::ostream& out) {
+    Writer w(out);
+    w.bytes(magic, sizeof magic);
+    w.put(std::uint64_t(checkpoint.numbers.size()));
+    for (const auto& [name, value] : checkpoint.numbers) {
+      w.text(name);
+      w.put(value);
+    }
+    w.put(std::uint64_t(checkpoint.vectors.size()));
+    for (const auto& [name, values] : checkpoint.vectors) {
+      w.text(name);
+      w.put(std::uint64_t(values.size()));
+      w.bytes(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
+    }
+    w.put(std::uint64_t(checkpoint.texts.size()));
+    for (const auto& [name, text] : checkpoint.texts) {
+      w.text(name);
+      w.text(text);
+    }
+    w.finish();
+  });
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
@@ -115,9 +136,9 @@ Checkpoint read_checkpoint(const std::string& path) {
   const size_t body = bytes.size() - sizeof(std::uint64_t);
   std::uint64_t stored;
   std::memcpy(&stored, bytes.data() + body, sizeof stored);
-  require(stored == checksum(bytes.data(), body), "checkpoint '", path, "' is damaged (its checksum does not match)");
+  require(stored == content_hash(std::string_view(bytes.data(), body)), "checkpoint '", path, "' is damaged (its checksum does not match)");
 
-  const std::string content = bytes.substr(0, body);
+  const std::string_view content(bytes.data(), body);
   Reader r(path, content);
   r.get<std::array<char, sizeof magic>>();
   Checkpoint c;

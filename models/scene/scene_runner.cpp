@@ -746,7 +746,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
         save_totals(result, wall, checkpoint);  // a resumed run counts this checkpoint's own writing as other
         for (const auto& [key, value] : electrodes.state()) checkpoint.numbers[key] = value;
         if (books)
-          for (const auto& [key, value] : books->state()) checkpoint.vectors[key] = value;
+          checkpoint.vectors.merge(books->state());  // moves the nodes of the books' fresh map, no copy
         save_series(*series, checkpoint);
         write_checkpoint(checkpoint_path, checkpoint);
         if (run_options.after_checkpoint) run_options.after_checkpoint();
