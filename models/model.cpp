@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <set>
+#include <utility>
 
 #include "assembly/cell_partition.hpp"
 #include "assembly/error.hpp"
@@ -554,6 +555,8 @@ void Model::keep_brick_residuals(const std::vector<int>& bricks) {
 }
 
 const Eigen::VectorXd& Model::brick_residual(int brick, const std::string& unknown) const {
+  require(!kept_residuals_in_snapshot_, "Model: brick_residual(", brick,
+          ") while a residual snapshot holds the kept residuals (restore_residual() first)");
   const auto kept = kept_residuals_.find(brick);
   require(kept != kept_residuals_.end(), "Model: the residual of brick ", brick, " is not kept (keep_brick_residuals)");
   const auto it = kept->second.find(unknown);
@@ -833,8 +836,10 @@ void Model::assemble(bool tangent) {
   for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
 }
 
-Model::ResidualSnapshot Model::residual_snapshot() const {
-  return {residual_, field_residuals_, kept_residuals_, residual_scales_, round_off_scales_};
+Model::ResidualSnapshot Model::take_residual_snapshot() {
+  require(!kept_residuals_in_snapshot_, "Model: take_residual_snapshot() while another snapshot holds the kept residuals");
+  kept_residuals_in_snapshot_ = true;
+  return {residual_, field_residuals_, std::exchange(kept_residuals_, {}), residual_scales_, round_off_scales_};
 }
 
 void Model::restore_residual(ResidualSnapshot snapshot) {
@@ -843,6 +848,7 @@ void Model::restore_residual(ResidualSnapshot snapshot) {
   residual_ = std::move(snapshot.residual);
   field_residuals_ = std::move(snapshot.field_residuals);
   kept_residuals_ = std::move(snapshot.kept_residuals);
+  kept_residuals_in_snapshot_ = false;
   residual_scales_ = std::move(snapshot.residual_scales);
   round_off_scales_ = std::move(snapshot.round_off_scales);
 }

@@ -134,13 +134,16 @@ class Model : public DataView, public NonlinearProblem {
   // What assemble(false) leaves behind (the residual, its per-field and kept-brick pieces, its scales),
   // kept so that a caller who assembles at perturbed values (a finite difference) can put the last
   // assembly's back without assembling again. Valid only while the values it was assembled at stand.
+  // The kept bricks' residuals are moved into the snapshot, not copied (there is one per kept brick and
+  // unknown, the largest part of it): until restore_residual(), assemblies keep none, and
+  // brick_residual() refuses.
   struct ResidualSnapshot {
     Eigen::VectorXd residual;
     std::map<std::string, Eigen::VectorXd> field_residuals;
     std::map<int, std::map<std::string, Eigen::VectorXd>> kept_residuals;
     std::map<std::string, double> residual_scales, round_off_scales;
   };
-  ResidualSnapshot residual_snapshot() const;
+  ResidualSnapshot take_residual_snapshot();
   void restore_residual(ResidualSnapshot snapshot);
   // Per unknown, the norm (on free dofs) of the largest single brick contribution to the last residual:
   // the scale of the forces that balance, Newton's reference.
@@ -204,6 +207,7 @@ class Model : public DataView, public NonlinearProblem {
   std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
   std::map<std::string, Eigen::VectorXd> field_residuals_;
   std::map<int, std::map<std::string, Eigen::VectorXd>> kept_residuals_;  // per kept brick, per unknown
+  bool kept_residuals_in_snapshot_ = false;  // take_residual_snapshot() holds them
   std::map<std::string, double> residual_scales_;
   std::map<std::string, double> round_off_scales_;
   std::vector<double> product_rows_, gross_rows_;  // scratch of the residual's products, per row

@@ -223,7 +223,7 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
   // The response of the step's solution to a history perturbation P, linearised: J dx = -(dR/dh) P, the
   // derivative taken by a difference of residuals (exact for the linear bricks).
   // The converged assembly is kept whole, to be put back after the perturbed ones (not assembled again).
-  Model::ResidualSnapshot converged = model.residual_snapshot();
+  Model::ResidualSnapshot converged = model.take_residual_snapshot();
   const Eigen::VectorXd& converged_residual = converged.residual;
   const DofLayout& layout = model.layout();
   const auto response = [&](const FieldVectors& perturbation) {

@@ -134,11 +134,16 @@ TEST(Model, ARestoredResidualSnapshotIsTheAssemblyAtTheRestoredValues) {
   m.set_values("v", Eigen::VectorXd::Random(m.space("v").num_dofs()));
   m.apply_dirichlet();
   m.assemble(false);
-  Model::ResidualSnapshot kept = m.residual_snapshot();
+  Model::ResidualSnapshot kept = m.take_residual_snapshot();
   const Eigen::VectorXd u_prev = m.values("u_prev");
   m.set_values("u_prev", u_prev + 1e-3 * Eigen::VectorXd::Random(u_prev.size()));
   m.assemble(false);
   ASSERT_GT((m.residual() - kept.residual).norm(), 0.0);  // the perturbation reached the residual
+  // The snapshot holds the kept residuals (moved, not copied): none is read until it is put back.
+  EXPECT_THAT([&] { (void)m.brick_residual(bulk.elasticity, "v"); },
+              ::testing::ThrowsMessage<Error>(HasSubstr("while a residual snapshot holds the kept residuals")));
+  EXPECT_THAT([&] { (void)m.take_residual_snapshot(); },
+              ::testing::ThrowsMessage<Error>(HasSubstr("while another snapshot holds the kept residuals")));
   m.restore_residual(std::move(kept));
   const Eigen::VectorXd restored = m.residual(), restored_v = m.field_residual("v"),
                         restored_elastic = m.brick_residual(bulk.elasticity, "v");
