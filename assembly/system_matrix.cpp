@@ -74,7 +74,8 @@ void SystemMatrix::set_values(std::span<const double> values) {
   std::copy(values.begin(), values.end(), matrix_.valuePtr());
 }
 
-void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
+template <class Target>
+void SystemMatrix::scatter(int handle, const CsrMatrix& block, double factor, Target&& target) const {
   require(finalized_, "SystemMatrix: add() before finalize()");
   require(handle >= 0 && handle < num_blocks(), "SystemMatrix: unknown block handle ", handle);
   const Block& b = blocks_[handle];
@@ -88,7 +89,6 @@ void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
   const double* values = block.valuePtr();
   const int* outer = matrix_.outerIndexPtr();
   const int* inner = matrix_.innerIndexPtr();
-  double* target = matrix_.valuePtr();
   for (int r = 0; r < b.rows; ++r) {
     const int row = rows[r];
     if (row < 0) continue;
@@ -103,9 +103,33 @@ void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
       while (slot < end && inner[slot] < col) ++slot;
       require(slot < end && inner[slot] == col, "SystemMatrix: block ", handle, " has an entry (", r, ", ",
               block_inner[k], ") outside the pattern it was declared with");
-      target[slot] += factor * values[k];
+      target(row, slot, factor * values[k]);
     }
   }
+}
+
+void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
+  double* values = matrix_.valuePtr();
+  scatter(handle, block, factor, [values](int, int slot, double value) { values[slot] += value; });
+}
+
+void SystemMatrix::add_to(int handle, const CsrMatrix& block, double factor, CsrMatrix& target) const {
+  require(target.rows() == matrix_.rows() && target.nonZeros() == matrix_.nonZeros(),
+          "SystemMatrix: add_to() a matrix of another pattern");
+  double* values = target.valuePtr();
+  scatter(handle, block, factor, [values](int, int slot, double value) { values[slot] += value; });
+}
+
+void SystemMatrix::add_to_rows(int handle, const CsrMatrix& block, double factor, std::span<const long> row_start,
+                               std::span<double> values) const {
+  require(long(row_start.size()) == long(matrix_.rows()), "SystemMatrix: add_to_rows() with ", row_start.size(),
+          " row starts for ", matrix_.rows(), " rows");
+  const int* outer = matrix_.outerIndexPtr();
+  scatter(handle, block, factor, [&](int row, int slot, double value) {
+    require(row_start[row] >= 0, "SystemMatrix: block ", handle, " has an entry on row ", row,
+            ", which add_to_rows() does not hold");
+    values[size_t(row_start[row] + (slot - outer[row]))] += value;
+  });
 }
 
 }  // namespace pc

@@ -27,6 +27,15 @@ class SystemMatrix {
   // matrix += factor * block (the block must have the pattern it was declared with; an entry outside the
   // global pattern is refused).
   void add(int handle, const CsrMatrix& block, double factor = 1.0);
+  // target += factor * block, for a matrix of this one's pattern held apart from it (e.g. the Jacobian
+  // formed from the linear part this matrix holds).
+  void add_to(int handle, const CsrMatrix& block, double factor, CsrMatrix& target) const;
+  // The same sum into values held apart from the matrix, for some of its rows only: the row `row`'s
+  // slots are values[row_start[row]] onwards, in the pattern's order, and a row with row_start -1 is not
+  // held (an entry of the block on it is refused). E.g. the rows that nonlinear terms fill, summed
+  // without a second copy of the whole matrix.
+  void add_to_rows(int handle, const CsrMatrix& block, double factor, std::span<const long> row_start,
+                   std::span<double> values) const;
   const CsrMatrix& matrix() const { return matrix_; }
   // The values in pattern order, e.g. to keep a partial sum and restore it without re-adding blocks.
   std::vector<double> values() const { return {matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros()}; }
@@ -34,6 +43,11 @@ class SystemMatrix {
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
 
  private:
+  // target(row, slot) += factor * block for each of the block's entries on a free row and column; target
+  // is given the global row and the slot (an index into the matrix's pattern) of each entry.
+  template <class Target>
+  void scatter(int handle, const CsrMatrix& block, double factor, Target&& target) const;
+
   struct Block {
     int row_field, col_field, rows, cols;
     long nnz;

@@ -54,13 +54,21 @@ struct Model::System {
   DofLayout layout;
   std::unique_ptr<SystemMatrix> matrix;
   std::vector<std::vector<std::vector<int>>> handles;  // [brick][term][coupling]
-  // The sum of the linear blocks with the scheme's factors, with the Jacobian's pattern: each Jacobian
-  // starts from its values, and linear_jacobian() is this matrix (one copy serves both).
-  CsrMatrix linear_matrix;
+  // `matrix` holds the sum of the linear blocks with the scheme's factors (linear_jacobian()). The
+  // Jacobian, that sum plus the nonlinear blocks, is formed only when it is asked for: the condensed
+  // solves need no more than its nonlinear rows (nonlinear_part()), and a second matrix of the whole
+  // pattern was the largest allocation of the model's own at a run's peak.
+  CsrMatrix jacobian;
+  bool jacobian_current = false;                   // jacobian is that of the last assemble(true)
+  std::vector<double> jacobian_factors;            // affine factors of the last assemble(true)
   std::uint64_t linear_stamp = ~std::uint64_t(0);  // linear_version_ the sum was made with
   std::vector<double> linear_factors;              // affine factors it was made with
   std::uint64_t linear_sum = 0;                    // Model::linear_sums_ when it was last made
   std::vector<int> nonlinear_dofs;                 // free dofs that nonlinear blocks touch, sorted
+  // Where each nonlinear dof's row starts in nonlinear_part()'s values (-1 for other rows), and their
+  // number.
+  std::vector<long> nonlinear_row_start;
+  long nonlinear_slots = 0;
 };
 
 namespace {
@@ -532,6 +540,12 @@ Model::System& Model::system() {
       }
   }
   s.nonlinear_dofs.assign(touched.begin(), touched.end());
+  s.nonlinear_row_start.assign(s.layout.size(), -1);
+  const int* outer = s.matrix->matrix().outerIndexPtr();
+  for (int row : s.nonlinear_dofs) {
+    s.nonlinear_row_start[row] = s.nonlinear_slots;
+    s.nonlinear_slots += outer[row + 1] - outer[row];
+  }
   return s;
 }
 
@@ -543,8 +557,60 @@ const DofLayout& Model::layout() const {
 
 const CsrMatrix& Model::jacobian() const {
   const auto it = systems_.find(frozen_);
-  require(it != systems_.end(), "Model: jacobian() before assemble(true)");
-  return it->second->matrix->matrix();
+  require(it != systems_.end() && it->second->linear_sum > 0, "Model: jacobian() before assemble(true)");
+  System& s = *it->second;  // the Jacobian is formed on first demand: logically const
+  if (!s.jacobian_current) {
+    const auto start = std::chrono::steady_clock::now();
+    require_factors_of_last_tangent(s, "jacobian()");
+    const CsrMatrix& linear = s.matrix->matrix();
+    if (s.jacobian.rows() != linear.rows() || s.jacobian.nonZeros() != linear.nonZeros())
+      s.jacobian = linear;
+    else
+      std::copy_n(linear.valuePtr(), linear.nonZeros(), s.jacobian.valuePtr());
+    for_each_nonlinear_block(s, [&](int handle, const CsrMatrix& block, double factor) {
+      s.matrix->add_to(handle, block, factor, s.jacobian);
+    });
+    s.jacobian_current = true;
+    jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return s.jacobian;
+}
+
+void Model::nonlinear_part(std::vector<double>& values) {
+  System& s = system();
+  require(s.linear_sum > 0, "Model: nonlinear_part() before assemble(true)");
+  require_factors_of_last_tangent(s, "nonlinear_part()");
+  values.assign(size_t(s.nonlinear_slots), 0.0);
+  for_each_nonlinear_block(s, [&](int handle, const CsrMatrix& block, double factor) {
+    s.matrix->add_to_rows(handle, block, factor, s.nonlinear_row_start, values);
+  });
+}
+
+template <class Add>
+void Model::for_each_nonlinear_block(const System& s, Add&& add) const {
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    if (bricks_[b]->linear()) continue;
+    const BrickState& state = *brick_states_[b];
+    for (size_t t = 0; t < state.terms.size(); ++t) {
+      const BoundTerm& bt = state.terms[t];
+      for (size_t k = 0; k < bt.trial_fields.size(); ++k)
+        add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
+    }
+  }
+}
+
+// The nonlinear blocks hold the tangent of the last assemble(true); summed with other factors (a step
+// begun since) they would be no Jacobian at all.
+void Model::require_factors_of_last_tangent(const System& s, const char* what) const {
+  require(affine_factors() == s.jacobian_factors, "Model: ", what,
+          " after the time scheme's factors changed since the last assemble(true)");
+}
+
+std::vector<double> Model::affine_factors() const {
+  std::vector<double> factors;
+  for (const auto& [name, f] : fields_)
+    if (f->kind == FieldKind::Affine) factors.push_back(f->factor);
+  return factors;
 }
 
 void Model::keep_brick_residuals(const std::vector<int>& bricks) {
@@ -605,11 +671,6 @@ void Model::refresh_linear_sum(System& s) {
         s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
     }
   }
-  const CsrMatrix& sum = s.matrix->matrix();
-  if (s.linear_matrix.rows() != sum.rows() || s.linear_matrix.nonZeros() != sum.nonZeros())
-    s.linear_matrix = sum;  // the first sum: the pattern with the values
-  else
-    std::copy_n(sum.valuePtr(), sum.nonZeros(), s.linear_matrix.valuePtr());
 }
 
 void Model::assemble(bool tangent) {
@@ -805,25 +866,15 @@ void Model::assemble(bool tangent) {
 
   if (tangent) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<double> factors;
-    for (const auto& [name, f] : fields_)
-      if (f->kind == FieldKind::Affine) factors.push_back(f->factor);
+    std::vector<double> factors = affine_factors();
     if (s.linear_stamp != linear_version_ || s.linear_factors != factors) {
       refresh_linear_sum(s);
       s.linear_stamp = linear_version_;
       s.linear_factors = factors;
       s.linear_sum = ++linear_sums_;
     }
-    s.matrix->set_values({s.linear_matrix.valuePtr(), size_t(s.linear_matrix.nonZeros())});
-    for (int b = 0; b < int(bricks_.size()); ++b) {
-      if (bricks_[b]->linear()) continue;
-      const BrickState& state = *brick_states_[b];
-      for (size_t t = 0; t < state.terms.size(); ++t) {
-        const BoundTerm& bt = state.terms[t];
-        for (size_t k = 0; k < bt.trial_fields.size(); ++k)
-          s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
-      }
-    }
+    s.jacobian_factors = std::move(factors);
+    s.jacobian_current = false;  // formed by jacobian() when asked for
     jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
@@ -897,7 +948,7 @@ void Model::add_to_free_values(const Eigen::VectorXd& step) {
 const CsrMatrix& Model::linear_jacobian() {
   System& s = system();
   require(s.linear_sum > 0, "Model: linear_jacobian() before assemble(true)");
-  return s.linear_matrix;
+  return s.matrix->matrix();
 }
 
 std::uint64_t Model::linear_jacobian_version() { return system().linear_sum; }

@@ -105,14 +105,17 @@ class Model : public DataView, public NonlinearProblem {
   // Unknowns excluded from the system keep their values (e.g. v while the initial potential is found).
   void set_frozen(const std::vector<std::string>& unknowns);
   const DofLayout& layout() const;
-  // Assembles the residual on the free dofs and, if asked, the Jacobian (SystemMatrix::matrix()).
+  // Assembles the residual on the free dofs and, if asked, the tangent: the linear bricks' sum and the
+  // nonlinear bricks' blocks, of which jacobian() forms the Jacobian when it is first asked for (the
+  // condensed solves never ask: nonlinear_part() is all they read).
   void assemble(bool tangent) override;
   const Eigen::VectorXd& residual() const override { return residual_; }
   const CsrMatrix& jacobian() const override;
+  void nonlinear_part(std::vector<double>& values) override;
   // The Jacobian's share of assembly: the linear bricks' tangent element loops (once per change of their
   // data, in whichever assemble() needs them first: their residual is a mat-vec with them), their sum with
-  // the scheme's factors and its copy into the Jacobian, and the nonlinear blocks added to it. The
-  // nonlinear bricks' element loops compute residual and tangent in one pass and count as the residual's.
+  // the scheme's factors, and the Jacobian formed from it with the nonlinear blocks. The nonlinear
+  // bricks' element loops compute residual and tangent in one pass and count as the residual's.
   double jacobian_assembly_seconds() const override { return jacobian_seconds_; }
   // The sum of the linear bricks' blocks with the current factors (the Jacobian without the nonlinear
   // bricks), with the Jacobian's pattern; its version changes only when that sum was recomputed (a new
@@ -188,6 +191,10 @@ class Model : public DataView, public NonlinearProblem {
   System& system();
   void refresh_brick(int index);
   void refresh_linear_sum(System& s);
+  template <class Add>
+  void for_each_nonlinear_block(const System& s, Add&& add) const;  // add(handle, block, factor)
+  void require_factors_of_last_tangent(const System& s, const char* what) const;
+  std::vector<double> affine_factors() const;
 
   std::shared_ptr<const Mesh> mesh_;
   // The geometry and block patterns the bricks' terms share (one copy for all body terms).
@@ -216,7 +223,7 @@ class Model : public DataView, public NonlinearProblem {
   std::uint64_t linear_version_ = 1;  // changes when a linear brick's blocks change
   std::uint64_t linear_sums_ = 0;     // counts recomputations of the linear sum
   double time_ = 0;
-  double jacobian_seconds_ = 0;
+  mutable double jacobian_seconds_ = 0;  // jacobian() forms the Jacobian on demand
   bool finalized_ = false;
 };
 

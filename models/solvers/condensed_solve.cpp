@@ -121,18 +121,18 @@ Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::Ve
   // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
   // active dofs where D has a non-zero row or column (for contact, the nodes in compression).
   const auto t = Clock::now();
-  const CsrMatrix& J = problem.jacobian();
   const CsrMatrix& A = problem.linear_jacobian();
+  problem.nonlinear_part(nonlinear_values_);
   const int m = static_cast<int>(nonlinear_.size());
   NonlinearPart D;
   std::vector<char> is_active(m, 0);
+  size_t value = 0;
   for (int i = 0; i < m; ++i) {
     const int row = nonlinear_[i];
-    for (int k = J.outerIndexPtr()[row]; k < J.outerIndexPtr()[row + 1]; ++k) {
-      const int j = position_[J.innerIndexPtr()[k]];
-      if (j < 0) continue;
-      const double d = J.valuePtr()[k] - A.valuePtr()[k];
-      if (d == 0) continue;
+    for (int k = A.outerIndexPtr()[row]; k < A.outerIndexPtr()[row + 1]; ++k) {
+      const double d = nonlinear_values_[value++];
+      const int j = position_[A.innerIndexPtr()[k]];
+      if (j < 0 || d == 0) continue;
       D.entries.emplace_back(i, j, d);
       is_active[i] = is_active[j] = 1;
     }

@@ -91,8 +91,9 @@ LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
   StrategyCostInputs inputs;
   inputs.dofs = double(problem.residual().size());
   inputs.nonlinear_dofs = double(nonlinear.size());
-  inputs.jacobian_nonzeros = double(problem.jacobian().nonZeros());
-  inputs.factors = krylov_.analyze(problem.jacobian());
+  // The linear part has J's pattern, and asking for it forms no Jacobian.
+  inputs.jacobian_nonzeros = double(problem.linear_jacobian().nonZeros());
+  inputs.factors = krylov_.analyze(problem.linear_jacobian());
   inputs.memory_budget_bytes = options_.dense_memory_budget_bytes;
   const StrategyCosts costs = predict_strategy_costs(inputs);
   // The dense methods also keep to solver.condensed_max_dofs.

@@ -41,6 +41,11 @@ class NonlinearProblem {
   virtual std::uint64_t linear_jacobian_version() = 0;
   // The free dofs outside whose rows and columns J - A vanishes (sorted).
   virtual const std::vector<int>& nonlinear_dofs() = 0;
+  // J - A on the rows of nonlinear_dofs(), in the pattern J and A share: the rows one after the other,
+  // each with a value for every slot of that row of linear_jacobian(). This is all a condensed solve
+  // reads of J; a problem that sums its nonlinear terms apart (Model) gives it without forming J, and
+  // exactly, where the default takes J's values less A's.
+  virtual void nonlinear_part(std::vector<double>& values);
 
   // The blocks, in order, covering x.
   virtual std::vector<ProblemBlock> blocks() const = 0;

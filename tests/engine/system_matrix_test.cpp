@@ -61,5 +61,37 @@ TEST(SystemMatrix, MergesBlocksIntoTheUnionOfTheirPatterns) {
   EXPECT_THROW(two.add(h, block(2, 2, {{1, 0, 1.0}}), 1.0), Error) << "(1, 0) is outside the declared pattern";
 }
 
+// The same sums into values held apart: add_to() into a matrix of the same pattern gives what add() gives,
+// and add_to_rows() gives exactly the held rows' slots of it, refusing an entry on a row it does not hold.
+TEST(SystemMatrix, SumsIntoAMatrixOfItsPatternOrIntoSomeOfItsRowsAlone) {
+  DofLayout layout;
+  layout.add_field("u", 3);
+  SystemMatrix system(layout);
+  const CsrMatrix full = block(3, 3, {{0, 0, 1.0}, {0, 2, 2.0}, {1, 1, 3.0}, {2, 0, 4.0}, {2, 2, 5.0}});
+  const CsrMatrix corner = block(3, 3, {{2, 0, 0.5}, {2, 2, 0.25}});  // row 2 alone
+  const int h_full = system.declare(0, 0, full), h_corner = system.declare(0, 0, corner);
+  system.finalize();
+  system.set_zero();
+  system.add(h_full, full, 1.0);
+  system.add(h_corner, corner, 4.0);
+  CsrMatrix apart = system.matrix();
+  std::fill(apart.valuePtr(), apart.valuePtr() + apart.nonZeros(), 0.0);
+  system.add_to(h_full, full, 1.0, apart);
+  system.add_to(h_corner, corner, 4.0, apart);
+  EXPECT_EQ(Eigen::MatrixXd(apart), Eigen::MatrixXd(system.matrix()));
+
+  // Row 2 alone: its slots in the pattern are columns 0 and 2.
+  const int* outer = system.matrix().outerIndexPtr();
+  const std::vector<long> row_start{-1, -1, 0};
+  std::vector<double> values(size_t(outer[3] - outer[2]), 0.0);
+  system.add_to_rows(h_corner, corner, 4.0, row_start, values);
+  ASSERT_EQ(values.size(), 2u);
+  EXPECT_EQ(values[0], 2.0);  // (2, 0)
+  EXPECT_EQ(values[1], 1.0);  // (2, 2)
+  EXPECT_THROW(system.add_to_rows(h_full, full, 1.0, row_start, values), Error) << "rows 0 and 1 are not held";
+  CsrMatrix other(3, 3);
+  EXPECT_THROW(system.add_to(h_full, full, 1.0, other), Error) << "a matrix of another pattern";
+}
+
 }  // namespace
 }  // namespace pc

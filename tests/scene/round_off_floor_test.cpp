@@ -39,15 +39,16 @@ TEST(RoundOffFloor, AToleranceBelowTheFloorIsRefusedWhenTheSceneIsRead) {
 
 // Given through the API, the same tolerance ran for ever (cut-back after cut-back, dt / 1024 after ten
 // minutes, silently). Newton now stops the step when the residual stagnates at its floor above the
-// tolerance, and the run stops there with that message, without a cut-back: at t = 0 or 0.01 on the
-// paper's mesh (a step may still meet the tolerance by chance, or the increment test).
+// tolerance, and the run stops there with that message, without a cut-back: in one of its first steps on
+// the paper's mesh (a step may still meet the tolerance by chance, or the increment test; which ones do
+// moves with the last digits of the Newton corrections).
 TEST(RoundOffFloor, AnUnreachableToleranceStopsTheRunWithoutCutBacksNamingTheFloor) {
   // (time.max_attempts bounds the run that cut back for ever.)
   Scene scene = load_scene_file(kScene, {"time.steps=20", "time.max_attempts=100"});
   scene.newton.relative_tolerance = 1e-15;
   const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
   EXPECT_FALSE(r.completed);
-  EXPECT_LE(r.steps, 2);
+  EXPECT_LE(r.steps, 3);
   EXPECT_EQ(r.cutbacks, 0) << r.message;
   EXPECT_LE(r.newton_iterations_total, (r.steps + 1) * scene.newton.max_iterations) << r.message;
   EXPECT_CONTAINS(r.message, "failed (round_off_floor: the residual of block 'v'");
