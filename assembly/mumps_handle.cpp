@@ -1,6 +1,8 @@
 #include "assembly/mumps_handle.hpp"
 
 #include <cstdint>
+#include <cstdlib>
+#include <mutex>
 
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
@@ -14,9 +16,23 @@ constexpr MUMPS_INT kDistributedAssembledInput = 3;  // ICNTL(18)
 // INFO(1) for a numerically singular matrix (INFO(2) then counts the pivots eliminated before).
 constexpr MUMPS_INT kNumericallySingular = -10;
 
+// MUMPS orders larger matrices with SCOTCH, and SCOTCH 7 coarsens its graphs on as many threads as there
+// are cores. Its threaded orderings differ from one process to the next (so did a run's last digits: 3e-12
+// in a displacement at 240 x 80, the factors' entries 5.73-5.82 M for one matrix), and under a memory limit
+// a failed allocation in one of its threads crashed the process (a segfault in SCOTCHgraphMatch, where
+// MUMPS would otherwise report -13). One thread makes both reproducible and safe, for an ordering done
+// once per pattern. A value the user set is kept.
+void order_on_one_scotch_thread() {
+  static std::once_flag once;
+  std::call_once(once, [] { setenv("SCOTCH_PTHREAD_NUMBER", "1", /*overwrite=*/0); });
+}
+
 }  // namespace
 
-MumpsHandle::MumpsHandle(const char* owner, Scope scope) : owner_(owner), scope_(scope) { start(General); }
+MumpsHandle::MumpsHandle(const char* owner, Scope scope) : owner_(owner), scope_(scope) {
+  order_on_one_scotch_thread();
+  start(General);
+}
 
 MumpsHandle::~MumpsHandle() { stop(); }
 

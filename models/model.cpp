@@ -577,6 +577,7 @@ const CsrMatrix& Model::jacobian() const {
 }
 
 void Model::nonlinear_part(std::vector<double>& values) {
+  const auto start = std::chrono::steady_clock::now();
   System& s = system();
   require(s.linear_sum > 0, "Model: nonlinear_part() before assemble(true)");
   require_factors_of_last_tangent(s, "nonlinear_part()");
@@ -584,6 +585,7 @@ void Model::nonlinear_part(std::vector<double>& values) {
   for_each_nonlinear_block(s, [&](int handle, const CsrMatrix& block, double factor) {
     s.matrix->add_to_rows(handle, block, factor, s.nonlinear_row_start, values);
   });
+  jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <class Add>

