@@ -68,12 +68,6 @@ void SystemMatrix::finalize() {
 
 void SystemMatrix::set_zero() { std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0); }
 
-void SystemMatrix::set_values(std::span<const double> values) {
-  require(finalized_ && long(values.size()) == long(matrix_.nonZeros()), "SystemMatrix: set_values() with ",
-          values.size(), " values for ", matrix_.nonZeros(), " non-zeros");
-  std::copy(values.begin(), values.end(), matrix_.valuePtr());
-}
-
 template <class Target>
 void SystemMatrix::scatter(int handle, const CsrMatrix& block, double factor, Target&& target) const {
   require(finalized_, "SystemMatrix: add() before finalize()");
@@ -108,10 +102,7 @@ void SystemMatrix::scatter(int handle, const CsrMatrix& block, double factor, Ta
   }
 }
 
-void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) {
-  double* values = matrix_.valuePtr();
-  scatter(handle, block, factor, [values](int, int slot, double value) { values[slot] += value; });
-}
+void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) { add_to(handle, block, factor, matrix_); }
 
 void SystemMatrix::add_to(int handle, const CsrMatrix& block, double factor, CsrMatrix& target) const {
   require(target.rows() == matrix_.rows() && target.nonZeros() == matrix_.nonZeros(),

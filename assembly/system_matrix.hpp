@@ -37,9 +37,6 @@ class SystemMatrix {
   void add_to_rows(int handle, const CsrMatrix& block, double factor, std::span<const long> row_start,
                    std::span<double> values) const;
   const CsrMatrix& matrix() const { return matrix_; }
-  // The values in pattern order, e.g. to keep a partial sum and restore it without re-adding blocks.
-  std::vector<double> values() const { return {matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros()}; }
-  void set_values(std::span<const double> values);
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
 
  private:

@@ -60,9 +60,8 @@ struct Model::System {
   // pattern was the largest allocation of the model's own at a run's peak.
   CsrMatrix jacobian;
   bool jacobian_current = false;                   // jacobian is that of the last assemble(true)
-  std::vector<double> jacobian_factors;            // affine factors of the last assemble(true)
   std::uint64_t linear_stamp = ~std::uint64_t(0);  // linear_version_ the sum was made with
-  std::vector<double> linear_factors;              // affine factors it was made with
+  std::vector<double> linear_factors;              // affine factors of the last assemble(true), the sum's
   std::uint64_t linear_sum = 0;                    // Model::linear_sums_ when it was last made
   std::vector<int> nonlinear_dofs;                 // free dofs that nonlinear blocks touch, sorted
   // Where each nonlinear dof's row starts in nonlinear_part()'s values (-1 for other rows), and their
@@ -567,7 +566,7 @@ const CsrMatrix& Model::jacobian() const {
       s.jacobian = linear;
     else
       std::copy_n(linear.valuePtr(), linear.nonZeros(), s.jacobian.valuePtr());
-    for_each_nonlinear_block(s, [&](int handle, const CsrMatrix& block, double factor) {
+    for_each_block(s, /*linear=*/false, [&](int handle, const CsrMatrix& block, double factor) {
       s.matrix->add_to(handle, block, factor, s.jacobian);
     });
     s.jacobian_current = true;
@@ -582,16 +581,16 @@ void Model::nonlinear_part(std::vector<double>& values) {
   require(s.linear_sum > 0, "Model: nonlinear_part() before assemble(true)");
   require_factors_of_last_tangent(s, "nonlinear_part()");
   values.assign(size_t(s.nonlinear_slots), 0.0);
-  for_each_nonlinear_block(s, [&](int handle, const CsrMatrix& block, double factor) {
+  for_each_block(s, /*linear=*/false, [&](int handle, const CsrMatrix& block, double factor) {
     s.matrix->add_to_rows(handle, block, factor, s.nonlinear_row_start, values);
   });
   jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 template <class Add>
-void Model::for_each_nonlinear_block(const System& s, Add&& add) const {
+void Model::for_each_block(const System& s, bool linear, Add&& add) const {
   for (int b = 0; b < int(bricks_.size()); ++b) {
-    if (bricks_[b]->linear()) continue;
+    if (bricks_[b]->linear() != linear) continue;
     const BrickState& state = *brick_states_[b];
     for (size_t t = 0; t < state.terms.size(); ++t) {
       const BoundTerm& bt = state.terms[t];
@@ -604,7 +603,7 @@ void Model::for_each_nonlinear_block(const System& s, Add&& add) const {
 // The nonlinear blocks hold the tangent of the last assemble(true); summed with other factors (a step
 // begun since) they would be no Jacobian at all.
 void Model::require_factors_of_last_tangent(const System& s, const char* what) const {
-  require(affine_factors() == s.jacobian_factors, "Model: ", what,
+  require(affine_factors() == s.linear_factors, "Model: ", what,
           " after the time scheme's factors changed since the last assemble(true)");
 }
 
@@ -664,15 +663,8 @@ void Model::refresh_brick(int index) {
 
 void Model::refresh_linear_sum(System& s) {
   s.matrix->set_zero();
-  for (int b = 0; b < int(bricks_.size()); ++b) {
-    if (!bricks_[b]->linear()) continue;
-    const BrickState& state = *brick_states_[b];
-    for (size_t t = 0; t < state.terms.size(); ++t) {
-      const BoundTerm& bt = state.terms[t];
-      for (size_t k = 0; k < bt.trial_fields.size(); ++k)
-        s.matrix->add(s.handles[b][t][k], bt.assembly->block(int(k)), affine_factor(bt.trial_fields[k]));
-    }
-  }
+  for_each_block(s, /*linear=*/true,
+                 [&](int handle, const CsrMatrix& block, double factor) { s.matrix->add(handle, block, factor); });
 }
 
 void Model::assemble(bool tangent) {
@@ -868,14 +860,13 @@ void Model::assemble(bool tangent) {
 
   if (tangent) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<double> factors = affine_factors();
+    const std::vector<double> factors = affine_factors();
     if (s.linear_stamp != linear_version_ || s.linear_factors != factors) {
       refresh_linear_sum(s);
       s.linear_stamp = linear_version_;
       s.linear_factors = factors;
       s.linear_sum = ++linear_sums_;
     }
-    s.jacobian_factors = std::move(factors);
     s.jacobian_current = false;  // formed by jacobian() when asked for
     jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }

@@ -191,8 +191,9 @@ class Model : public DataView, public NonlinearProblem {
   System& system();
   void refresh_brick(int index);
   void refresh_linear_sum(System& s);
+  // add(handle, block, factor) for each block of the linear bricks, or of the others.
   template <class Add>
-  void for_each_nonlinear_block(const System& s, Add&& add) const;  // add(handle, block, factor)
+  void for_each_block(const System& s, bool linear, Add&& add) const;
   void require_factors_of_last_tangent(const System& s, const char* what) const;
   std::vector<double> affine_factors() const;
 
