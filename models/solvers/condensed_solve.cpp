@@ -25,6 +25,13 @@ double largest_entry_in_rows(const CsrMatrix& A, const std::vector<int>& rows) {
   return largest;
 }
 
+bool same_entries(const std::vector<Eigen::Triplet<double, int>>& a, const std::vector<Eigen::Triplet<double, int>>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t k = 0; k < a.size(); ++k)
+    if (a[k].row() != b[k].row() || a[k].col() != b[k].col() || a[k].value() != b[k].value()) return false;
+  return true;
+}
+
 }  // namespace
 
 CondensedSolve::CondensedSolve(LinearStrategy method, std::string linear_solver, double max_fraction, int max_dofs)
@@ -102,11 +109,15 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
   version_ = problem.linear_jacobian_version();
 }
 
-Eigen::MatrixXd CondensedSolve::NonlinearPart::on_active() const {
+Eigen::SparseMatrix<double, Eigen::RowMajor> CondensedSolve::NonlinearPart::on_active() const {
   std::vector<int> index(active.empty() ? 0 : active.back() + 1, -1);
   for (size_t q = 0; q < active.size(); ++q) index[active[q]] = int(q);
-  Eigen::MatrixXd block = Eigen::MatrixXd::Zero(Eigen::Index(active.size()), Eigen::Index(active.size()));
-  for (const auto& e : entries) block(index[e.row()], index[e.col()]) = e.value();
+  std::vector<Eigen::Triplet<double, int>> on_active;
+  on_active.reserve(entries.size());
+  for (const auto& e : entries) on_active.emplace_back(index[e.row()], index[e.col()], e.value());
+  const auto a = Eigen::Index(active.size());
+  Eigen::SparseMatrix<double, Eigen::RowMajor> block(a, a);
+  block.setFromTriplets(on_active.begin(), on_active.end());
   return block;
 }
 
@@ -159,17 +170,22 @@ Eigen::VectorXd CondensedSolve::schur_step(const NonlinearPart& D, const Eigen::
   } else {
     x_c = schur_inverse_ * r;
     if (!active.empty()) {
-      const int a = static_cast<int>(active.size());
-      const Eigen::MatrixXd Da = D.on_active();
-      if (!woodbury_valid_ || active != woodbury_active_ || Da != woodbury_d_) {
-        woodbury_lu_.compute(Eigen::MatrixXd::Identity(a, a) + Da * schur_inverse_(active, active));
+      const Eigen::SparseMatrix<double, Eigen::RowMajor> Da = D.on_active();
+      if (!woodbury_valid_ || active != woodbury_active_ || !same_entries(D.entries, woodbury_d_)) {
+        Eigen::MatrixXd woodbury = Da * Eigen::MatrixXd(schur_inverse_(active, active));
+        woodbury.diagonal().array() += 1;
+        woodbury_lu_.compute(woodbury);
         woodbury_active_ = active;
-        woodbury_d_ = Da;
+        woodbury_d_ = D.entries;
         woodbury_valid_ = true;
         ++cost.dense_factorizations;
       }
       const Eigen::VectorXd z = woodbury_lu_.solve(Da * x_c(active));
-      x_c -= schur_inverse_(Eigen::all, active) * z;
+      // S_c^-1[:, I] z as S_c^-1 times z spread over the nonlinear dofs: a product with S_c^-1 in place,
+      // where S_c^-1[:, I] would be a copy of its active columns each iteration.
+      Eigen::VectorXd spread = Eigen::VectorXd::Zero(x_c.size());
+      spread(active) = z;
+      x_c.noalias() -= schur_inverse_ * spread;
     }
   }
   cost.condensation_seconds += seconds_since(t);
@@ -203,8 +219,10 @@ Eigen::VectorXd CondensedSolve::columns_step(const NonlinearPart& D, const Eigen
   for (int q = 0; q < a; ++q) S.col(q) = columns_[active[q]](active);
   std::vector<int> active_dofs(a);
   for (int q = 0; q < a; ++q) active_dofs[q] = nonlinear_[active[q]];
-  const Eigen::MatrixXd Da = D.on_active();
-  const Eigen::VectorXd z = (Eigen::MatrixXd::Identity(a, a) + S * Da).partialPivLu().solve(y(active_dofs));
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> Da = D.on_active();
+  Eigen::MatrixXd woodbury = S * Da;
+  woodbury.diagonal().array() += 1;
+  const Eigen::VectorXd z = woodbury.partialPivLu().solve(y(active_dofs));
   ++cost.dense_factorizations;
   const Eigen::VectorXd w = Da * z;
   Eigen::VectorXd corrected = b;

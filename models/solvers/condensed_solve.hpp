@@ -61,7 +61,9 @@ class CondensedSolve {
   struct NonlinearPart {
     std::vector<Eigen::Triplet<double, int>> entries;
     std::vector<int> active;  // the nonlinear dofs with a non-zero row or column of D, in order
-    Eigen::MatrixXd on_active() const;  // D_II
+    // D_II, sparse: a contact node's tangent couples its own few dofs, so products with it cost its
+    // non-zeros, not the cube of the active dofs.
+    Eigen::SparseMatrix<double, Eigen::RowMajor> on_active() const;
     Eigen::MatrixXd whole(int m) const;  // D, m x m
   };
   Eigen::VectorXd schur_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost);
@@ -85,7 +87,7 @@ class CondensedSolve {
   // The Woodbury system's factorisation, 1 + D_II S_c^-1[I, I], kept while the active set and D_II stay
   // the same (linear laws in a settled contact state: most iterations of the shipped scenes).
   std::vector<int> woodbury_active_;
-  Eigen::MatrixXd woodbury_d_;
+  std::vector<Eigen::Triplet<double, int>> woodbury_d_;  // D's entries it was formed with
   Eigen::PartialPivLU<Eigen::MatrixXd> woodbury_lu_;
   bool woodbury_valid_ = false;
   // Columns: A's factorisation and the columns of S computed so far.
