@@ -94,8 +94,11 @@ TEST(NonlinearProblem, NewtonConvergesQuadraticallyOnAHandWrittenSystem) {
 // hold. With cubic = 0 the ground springs are linear, yet outside A: a tangent D that never changes.
 class SpringChain : public NonlinearProblem {
  public:
-  SpringChain(int n, bool anchored, std::vector<int> held, double cubic = 1)
-      : n_(n), cubic_(cubic), x_(Eigen::VectorXd::Zero(n)), f_(Eigen::VectorXd::Zero(n)), nonlinear_(std::move(held)) {
+  // unheld: further nonlinear dofs that no spring holds (D is zero there: contact nodes out of contact).
+  SpringChain(int n, bool anchored, std::vector<int> held, double cubic = 1, std::vector<int> unheld = {})
+      : n_(n), cubic_(cubic), x_(Eigen::VectorXd::Zero(n)), f_(Eigen::VectorXd::Zero(n)), held_(held), nonlinear_(std::move(held)) {
+    nonlinear_.insert(nonlinear_.end(), unheld.begin(), unheld.end());
+    std::sort(nonlinear_.begin(), nonlinear_.end());
     std::vector<Eigen::Triplet<double>> entries;
     for (int i = 0; i + 1 < n; ++i)
       for (auto [r, c, v] : {std::tuple{i, i, 1.0}, {i + 1, i + 1, 1.0}, {i, i + 1, -1.0}, {i + 1, i, -1.0}})
@@ -110,7 +113,7 @@ class SpringChain : public NonlinearProblem {
     residual_ = internal - f_;
     scales_ = {std::max(internal.norm(), f_.norm())};
     if (tangent) jacobian_ = linear_;
-    for (int i : nonlinear_) {
+    for (int i : held_) {
       const double x = x_[i];
       residual_[i] += x + cubic_ * x * x * x;
       scales_[0] = std::max(scales_[0], std::abs(x + cubic_ * x * x * x));
@@ -134,7 +137,7 @@ class SpringChain : public NonlinearProblem {
   double cubic_;
   Eigen::VectorXd x_, f_, residual_;
   std::vector<double> scales_;
-  std::vector<int> nonlinear_;
+  std::vector<int> held_, nonlinear_;
   CsrMatrix linear_, jacobian_;
 };
 
@@ -197,6 +200,31 @@ TEST(NonlinearProblem, SchurCondensationRefactorisesItsDenseSystemOnlyWhenTheCon
   // And the kept factorisation gives the right answer: the residual of the linear chain vanishes.
   linear.assemble(false);
   EXPECT_LT(linear.residual().norm(), 1e-12);
+}
+
+// The Schur path's Woodbury system on the active dofs (those a spring holds; D is zero on the others, as on
+// contact nodes out of contact) reaches the full solve's answer with few, most or all of the nonlinear dofs
+// active, and is refactorised only when D changes (every iteration, for cubic springs).
+TEST(NonlinearProblem, TheSchurPathsWoodburySystemOnTheActiveDofsReachesTheFullSolution) {
+  const int n = 60;
+  const std::vector<int> candidates = {5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 59};
+  for (const int held_count : {2, 11, 12}) {  // 1/6, 11/12 and all of them active
+    const std::vector<int> held(candidates.end() - held_count, candidates.end());
+    const std::vector<int> unheld(candidates.begin(), candidates.end() - held_count);
+    SpringChain full(n, true, held, 1.0, unheld);
+    NewtonOptions in_full;
+    in_full.condensed_max_fraction = 0;
+    ASSERT_TRUE(NewtonSolver(in_full).solve(full).converged());
+    SpringChain condensed(n, true, held, 1.0, unheld);
+    NewtonOptions options;
+    options.condensation = "schur";
+    const NewtonReport report = NewtonSolver(options).solve(condensed);
+    ASSERT_TRUE(report.converged()) << held_count << ": " << report.message;
+    EXPECT_TRUE(report.condensed) << held_count;
+    EXPECT_EQ(report.factorizations, 1) << held_count;
+    EXPECT_EQ(report.dense_factorizations, report.iterations) << held_count;
+    EXPECT_LT((condensed.free_values() - full.free_values()).norm(), 1e-12 * full.free_values().norm()) << held_count;
+  }
 }
 
 // Past condensed_max_dofs nonlinear dofs the dense work (m^3) would exceed a full factorisation's: the
