@@ -106,6 +106,20 @@ double cell_jacobian(const Mesh& mesh, int cell, const double* xi, double* J) {
   return determinant(dim, J);
 }
 
+void inverse_transpose_jacobian(int dim, const double* J, double det, double* G) {
+  if (dim == 1) {
+    G[0] = 1 / det;
+  } else if (dim == 2) {
+    G[0] = J[3] / det, G[1] = -J[2] / det, G[2] = -J[1] / det, G[3] = J[0] / det;
+  } else {
+    for (int d = 0; d < 3; ++d)
+      for (int k = 0; k < 3; ++k) {
+        const int d1 = (d + 1) % 3, d2 = (d + 2) % 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        G[d * 3 + k] = (J[d1 * 3 + k1] * J[d2 * 3 + k2] - J[d1 * 3 + k2] * J[d2 * 3 + k1]) / det;
+      }
+  }
+}
+
 bool map_to_reference(const Mesh& mesh, int cell, const double* x, double* xi) {
   const Shape shape = mesh.cell_shape();
   const int dim = mesh.dim();

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <map>
 
-#include <Eigen/LU>
 
 #include "assembly/cell_geometry.hpp"
 #include "assembly/error.hpp"
@@ -151,15 +150,13 @@ void FESpace::gradient_in_cell(const Eigen::VectorXd& coefficients, int cell, co
 
 void FESpace::shape_gradients_in_cell(int cell, const double* xi, double* out) const {
   const int dim = mesh_->dim(), nloc = element_->num_dofs();
-  double J[9], dN[27 * 3];
-  cell_jacobian(*mesh_, cell, xi, J);
-  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3>> jacobian(J, dim, dim);
-  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3> inverse = jacobian.inverse();
+  double J[9], G[9], dN[27 * 3];
+  inverse_transpose_jacobian(dim, J, cell_jacobian(*mesh_, cell, xi, J), G);
   element_->gradients(xi, dN);
   for (int i = 0; i < nloc; ++i)
     for (int d = 0; d < dim; ++d) {
       double g = 0;  // d N_i / d x_d = sum_k d N_i / d xi_k * d xi_k / d x_d
-      for (int k = 0; k < dim; ++k) g += dN[i * dim + k] * inverse(k, d);
+      for (int k = 0; k < dim; ++k) g += dN[i * dim + k] * G[d * dim + k];
       out[i * dim + d] = g;
     }
 }

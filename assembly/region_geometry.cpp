@@ -75,17 +75,7 @@ void RegionGeometry::compute_cells(std::span<const char> owned_cells) {
       const size_t at = e * nq + q;
       weights_[at] = rule_->weights[q] * det;
       points_[at] = map_to_physical(mesh_, cells_[e], xi);
-      // G = J^{-T}: G[d][k] = d xi_k / d x_d = cofactor(d, k) / det J.
-      double* G = &inverse_jacobians_[at * dim * dim];
-      if (dim == 2) {
-        G[0] = J[3] / det, G[1] = -J[2] / det, G[2] = -J[1] / det, G[3] = J[0] / det;
-      } else {
-        for (int d = 0; d < 3; ++d)
-          for (int k = 0; k < 3; ++k) {
-            const int d1 = (d + 1) % 3, d2 = (d + 2) % 3, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-            G[d * 3 + k] = (J[d1 * 3 + k1] * J[d2 * 3 + k2] - J[d1 * 3 + k2] * J[d2 * 3 + k1]) / det;
-          }
-      }
+      inverse_transpose_jacobian(dim, J, det, &inverse_jacobians_[at * dim * dim]);
     }
   }
 }

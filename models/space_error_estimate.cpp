@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 
-#include <Eigen/LU>
 #include <Eigen/QR>
 
 #include "assembly/error.hpp"
@@ -272,7 +271,7 @@ SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const Ei
   result.field = field;
   result.cells.assign(mesh.num_cells(), 0.0);
   double estimate_squared = 0, norm_squared = 0;
-  double J[9];
+  double J[9], G[9];
   const bool affine = is_simplex(mesh.cell_shape());
   for (int cell = 0; cell < mesh.num_cells(); ++cell) {
     if (!space.has_cell(cell)) continue;
@@ -280,12 +279,11 @@ SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const Ei
     for (size_t i = 0; i < dofs.size(); ++i)
       for (int c = 0; c < components; ++c) values[i * components + c] = coefficients[space.dof(dofs[i], c)];
     double cell_squared = 0, det = 0;
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3> inverse;
     for (int q = 0; q < nq; ++q) {
       if (q == 0 || !affine) {  // a simplex's map is affine: one Jacobian for all its points
         det = cell_jacobian(mesh, cell, rule.points[q].data(), J);
         require(det > 0, "space error estimate of '", field, "': cell ", cell, " has det J = ", det, " (inverted cell)");
-        inverse = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor, 3, 3>>(J, dim, dim).inverse();
+        inverse_transpose_jacobian(dim, J, det, G);
       }
       const double* dNq = dN.data() + size_t(q) * nloc * dim;
       const double* Nq = N.data() + size_t(q) * nloc;
@@ -294,7 +292,7 @@ SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const Ei
       for (size_t i = 0; i < dofs.size(); ++i) {
         for (int d = 0; d < dim; ++d) {
           double g = 0;  // d N_i / d x_d = sum_k d N_i / d xi_k * d xi_k / d x_d
-          for (int k = 0; k < dim; ++k) g += dNq[i * dim + k] * inverse(k, d);
+          for (int k = 0; k < dim; ++k) g += dNq[i * dim + k] * G[d * dim + k];
           for (int c = 0; c < components; ++c) discrete[c * dim + d] += g * values[i * components + c];
         }
         for (int a = 0; a < width; ++a) recovered[a] += Nq[i] * nodal[size_t(dofs[i]) * width + a];
