@@ -54,15 +54,14 @@ std::vector<double> on_mesh_nodes(const PiezoContactModel& built, const std::vec
   if (!built.normal) return pressure;
   const FESpace& space = m.space("v");
   // Mesh vertices are the first dofs of each cell; a P2 space's other nodes are not mesh nodes.
-  std::map<int, int> vertex_of_dof;
+  std::vector<int> vertex_of_dof(space.num_scalar_dofs(), -1);
   for (int c = 0; c < m.mesh().num_cells(); ++c) {
     const auto dofs = space.cell_scalar_dofs(c);
     const auto vertices = m.mesh().cell(c);
     for (size_t k = 0; k < vertices.size(); ++k) vertex_of_dof[dofs[k]] = vertices[k];
   }
   for (size_t i = 0; i < p.size(); ++i)
-    if (const auto it = vertex_of_dof.find(built.contact_nodes.scalar_dofs[i]); it != vertex_of_dof.end())
-      pressure[it->second] = p[i];
+    if (const int vertex = vertex_of_dof[built.contact_nodes.scalar_dofs[i]]; vertex >= 0) pressure[vertex] = p[i];
   return pressure;
 }
 
