@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <map>
 
-
 #include "assembly/cell_geometry.hpp"
 #include "assembly/error.hpp"
 
@@ -151,7 +150,8 @@ void FESpace::gradient_in_cell(const Eigen::VectorXd& coefficients, int cell, co
 void FESpace::shape_gradients_in_cell(int cell, const double* xi, double* out) const {
   const int dim = mesh_->dim(), nloc = element_->num_dofs();
   double J[9], G[9], dN[27 * 3];
-  inverse_transpose_jacobian(dim, J, cell_jacobian(*mesh_, cell, xi, J), G);
+  const double det = cell_jacobian(*mesh_, cell, xi, J);
+  inverse_transpose_jacobian(dim, J, det, G);
   element_->gradients(xi, dN);
   for (int i = 0; i < nloc; ++i)
     for (int d = 0; d < dim; ++d) {

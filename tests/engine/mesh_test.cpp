@@ -229,6 +229,31 @@ TEST(CellGeometry, RoundTripsThroughTheReferenceCell) {
   EXPECT_NEAR(J[3], 1, 1e-14);  // dy/deta along the edge 0-3
 }
 
+// G = J^-T by cofactors: the chain rule's map from reference to physical gradients, G^T J = 1, on cells
+// whose Jacobians are full (a skewed quadrilateral away from its corners, a skewed tetrahedron).
+TEST(CellGeometry, TheInverseTransposeJacobianInvertsTheJacobian) {
+  const Mesh quad(2, Shape::Quadrilateral, {10, 10, 12, 10.5, 13, 12, 9.5, 11}, {0, 1, 2, 3});
+  const Mesh tet(3, Shape::Tetrahedron, {0, 0, 0, 2, 0.3, 0.1, 0.4, 1.5, -0.2, 0.3, 0.5, 3}, {0, 1, 2, 3});
+  for (const Mesh* mesh : {&quad, &tet}) {
+    const int dim = mesh->dim();
+    const double xi[3] = {0.3, 0.1, 0.2};
+    double J[9], G[9];
+    const double det = cell_jacobian(*mesh, 0, xi, J);
+    inverse_transpose_jacobian(dim, J, det, G);
+    for (int k = 0; k < dim; ++k)
+      for (int j = 0; j < dim; ++j) {
+        double product = 0;  // (G^T J)_kj = sum_d G[d][k] J[d][j]
+        for (int d = 0; d < dim; ++d) product += G[d * dim + k] * J[d * dim + j];
+        EXPECT_NEAR(product, k == j ? 1.0 : 0.0, 1e-14) << to_string(mesh->cell_shape()) << " " << k << j;
+        EXPECT_NE(J[k * dim + j], 0.0) << "a full Jacobian";
+      }
+  }
+  double G = 0;
+  const double J = 4;
+  inverse_transpose_jacobian(1, &J, 4, &G);
+  EXPECT_EQ(G, 0.25);
+}
+
 TEST(CellGeometry, InsideReference) {
   const double in_triangle[2] = {0.5, 0.5}, out_triangle[2] = {0.6, 0.5};
   EXPECT_TRUE(inside_reference(Shape::Triangle, in_triangle, 1e-12));
