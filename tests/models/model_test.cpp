@@ -165,6 +165,34 @@ TEST(Model, ARestoredResidualSnapshotIsTheAssemblyAtTheRestoredValues) {
 // The Jacobian's share of assembly: the linear bricks' tangents (whichever assembly needs them first, since
 // their residual is a mat-vec with them) and the Jacobian's sum; a later residual alone adds nothing. Newton
 // reports it within its assembly time.
+// The kept brick residuals are each brick's share of its fields' residuals: summed in brick order they give
+// each field's residual bitwise, at every assembly (the kept vectors are swapped, not copied, from one to
+// the next), and an unknown a brick does not test has a zero share.
+TEST(Model, KeptBrickResidualsAreEachBricksShareOfTheFieldResiduals) {
+  Bulk bulk;
+  Model& m = *bulk.model;
+  std::vector<int> all(m.bricks().size());
+  for (int b = 0; b < int(all.size()); ++b) all[b] = b;
+  m.keep_brick_residuals(all);
+  bulk.scheme.begin_step(m, 0.01);
+  for (int state = 0; state < 3; ++state) {
+    m.set_values("v", Eigen::VectorXd::Random(m.space("v").num_dofs()));
+    m.set_values("phi", Eigen::VectorXd::Random(m.space("phi").num_dofs()));
+    m.apply_dirichlet();
+    m.assemble(state == 1);
+    for (const char* u : {"v", "phi"}) {
+      Eigen::VectorXd sum = Eigen::VectorXd::Zero(m.space(u).num_dofs());
+      for (int b : all) sum += m.brick_residual(b, u);
+      EXPECT_EQ(sum, m.field_residual(u)) << u << " at state " << state;
+      ASSERT_GT(m.field_residual(u).norm(), 0.0);
+    }
+    EXPECT_EQ(m.brick_residual(bulk.viscosity, "phi").norm(), 0.0);
+    EXPECT_EQ(m.brick_residual(bulk.permittivity, "v").norm(), 0.0);
+    EXPECT_GT(m.brick_residual(bulk.piezo, "v").norm(), 0.0);
+    EXPECT_GT(m.brick_residual(bulk.piezo, "phi").norm(), 0.0);
+  }
+}
+
 TEST(Model, CountsTheJacobiansShareOfAssemblyOnlyWhenItIsAssembled) {
   Bulk bulk;
   bulk.scheme.begin_step(*bulk.model, 0.01);
