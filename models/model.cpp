@@ -691,10 +691,13 @@ void Model::assemble(bool tangent) {
       }
     return std::sqrt(sum);
   };
-  auto measure = [&](const std::string& u, const Eigen::VectorXd& r, double gross) {
-    const double net = free_norm(u, [&](int d) { return r[d]; });
+  // A piece of block u with net size `net` and gross size `gross` (>= net for a linear piece's |K| |x|).
+  auto record_scales = [&](const std::string& u, double net, double gross) {
     residual_scales_[u] = std::max(residual_scales_[u], net);
     round_off_scales_[u] = std::max({round_off_scales_[u], net, gross});
+  };
+  auto measure = [&](const std::string& u, const Eigen::VectorXd& r, double gross) {
+    record_scales(u, free_norm(u, [&](int d) { return r[d]; }), gross);
   };
   // A linear piece K x is measured by the norm of (|K| |x|)_i = sum_j |K_ij| |x_j| as well: the computed
   // product is off by at most a few eps (|K| |x|)_i in row i however much its terms cancel (Oettli and
@@ -742,8 +745,7 @@ void Model::assemble(bool tangent) {
         net += product_rows_[r] * product_rows_[r];
         gross += gross_rows_[r] * gross_rows_[r];
       }
-    residual_scales_[u] = std::max(residual_scales_[u], std::sqrt(net));
-    round_off_scales_[u] = std::max({round_off_scales_[u], std::sqrt(net), std::sqrt(gross)});
+    record_scales(u, std::sqrt(net), std::sqrt(gross));
   };
   // A kept brick's residual for an unknown it tests is swapped in below at every assembly; for one it does
   // not test (a set that changes only when its terms are bound again, which zeroes them) it stays zero.
@@ -761,9 +763,7 @@ void Model::assemble(bool tangent) {
       if (global[d] >= 0) sum += r[d] * r[d];
       field_residual[d] += r[d];
     }
-    const double net = std::sqrt(sum);
-    residual_scales_[u] = std::max(residual_scales_[u], net);
-    round_off_scales_[u] = std::max(round_off_scales_[u], net);
+    record_scales(u, std::sqrt(sum), 0);
     if (const auto kept = kept_residuals_.find(b); kept != kept_residuals_.end()) kept->second.at(u).swap(r);
     r.setZero();
   };
