@@ -590,6 +590,35 @@ void Model::nonlinear_part(std::vector<double>& values) {
   jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+bool Model::assemble_nonlinear_rows(Eigen::VectorXd& rows) {
+  if (processes::distributed()) return false;
+  System& s = system();
+  require(s.linear_sum > 0, "Model: assemble_nonlinear_rows() before assemble(true)");
+  require_factors_of_last_tangent(s, "assemble_nonlinear_rows()");
+  for (const std::string& u : unknown_names_) {
+    Eigen::VectorXd& sum = nonlinear_scratch_[u];
+    if (sum.size() != space(u).num_dofs()) sum.resize(space(u).num_dofs());
+    sum.setZero();
+  }
+  // Each nonlinear brick's element loops, as in assemble(true), summed per unknown; their tangent blocks
+  // are what nonlinear_part() sums.
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    if (bricks_[b]->linear()) continue;
+    for (BoundTerm& bt : brick_states_[b]->terms) {
+      std::vector<const Eigen::VectorXd*> values;
+      for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
+      std::vector<Eigen::VectorXd*> outputs;
+      for (const std::string& u : bt.test_unknowns) outputs.push_back(&nonlinear_scratch_.at(u));
+      bt.assembly->assemble(values, time_, outputs, true);
+    }
+  }
+  s.jacobian_current = false;
+  Eigen::VectorXd global = Eigen::VectorXd::Zero(s.layout.size());
+  for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), nonlinear_scratch_.at(u), global);
+  rows = global(s.nonlinear_dofs);
+  return true;
+}
+
 template <class Add>
 void Model::for_each_block(const System& s, bool linear, Add&& add) const {
   for (int b = 0; b < int(bricks_.size()); ++b) {

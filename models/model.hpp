@@ -112,6 +112,11 @@ class Model : public DataView, public NonlinearProblem {
   const Eigen::VectorXd& residual() const override { return residual_; }
   const CsrMatrix& jacobian() const override;
   void nonlinear_part(std::vector<double>& values) override;
+  // The nonlinear bricks alone, residual and tangent, at the current values (the linear bricks' data, the
+  // constants and the scheme's factors as at the last assemble(true)): the contact boundary's element
+  // loops, nothing of size the whole system but a scatter. residual(), the field and kept brick residuals
+  // and the scales stay those of the last assemble(). False when distributed (each process holds a share).
+  bool assemble_nonlinear_rows(Eigen::VectorXd& rows) override;
   // The Jacobian's share of assembly: the linear bricks' tangent element loops (once per change of their
   // data, in whichever assemble() needs them first: their residual is a mat-vec with them), their sum with
   // the scheme's factors, and the Jacobian formed from it with the nonlinear blocks. The nonlinear
@@ -219,6 +224,7 @@ class Model : public DataView, public NonlinearProblem {
   std::map<std::string, double> residual_scales_;
   std::map<std::string, double> round_off_scales_;
   std::vector<double> product_rows_, gross_rows_;  // scratch of the residual's products, per row
+  std::map<std::string, Eigen::VectorXd> nonlinear_scratch_;  // per unknown: assemble_nonlinear_rows()'s sums
   Eigen::VectorXd residual_;
   std::uint64_t clock_ = 0;           // version source for constants and data fields
   std::uint64_t linear_version_ = 1;  // changes when a linear brick's blocks change

@@ -564,12 +564,13 @@ Scene load_scene(const Json& json, const std::string& directory) {
     const auto s = json.find("solver");
     if (!s) return;
     require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog",
-                            "cutback_factor", "condensed", "condensation", "condensed_max_dofs", "max_memory_gib",
-                            "threads"});
+                            "cutback_factor", "condensed", "condensation", "condensed_max_dofs", "contact_newton",
+                            "max_memory_gib", "threads"});
     if (const auto x = s->find("threads")) scene.threads = x->as_int_at_least(1);
     if (const auto x = s->find("condensed"))
       scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
     if (const auto x = s->find("condensed_max_dofs")) scene.newton.condensed_max_dofs = x->as_int_at_least(0);
+    if (const auto x = s->find("contact_newton")) scene.newton.contact_newton = x->as_bool();
     scene.newton.condensation =
         chosen_entry(*s, "condensation", condensation_registry(), NewtonOptions{}.condensation).name;
     scene.newton.linear_solver =

@@ -127,8 +127,7 @@ Eigen::MatrixXd CondensedSolve::NonlinearPart::whole(int m) const {
   return d;
 }
 
-Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::VectorXd& b, LinearSolveCost& cost) {
-  prepare(problem, cost);
+CondensedSolve::NonlinearPart CondensedSolve::nonlinear_part(NonlinearProblem& problem, LinearSolveCost& cost) {
   // D: the difference J - A on the nonlinear rows and columns (the two share one pattern), and the
   // active dofs where D has a non-zero row or column (for contact, the nodes in compression).
   problem.nonlinear_part(nonlinear_values_);  // the problem's assembly (its Jacobian's time), not ours
@@ -151,17 +150,53 @@ Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::Ve
   for (int i = 0; i < m; ++i)
     if (is_active[i]) D.active.push_back(i);
   cost.condensation_seconds += seconds_since(t);
-  return method_ == LinearStrategy::Schur && m > 0 ? schur_step(D, b, cost) : columns_step(D, b, cost);
+  return D;
 }
 
-// (S_c + D) x_c = r with r = reduce(b), by Woodbury on S_c^-1 over the active dofs I:
-//   x_c = t - S_c^-1[:, I] (1 + D_II S_c^-1[I, I])^-1 D_II t_I,  t = S_c^-1 r,
-// then dx = expand(b, x_c).
+Eigen::VectorXd CondensedSolve::solve(NonlinearProblem& problem, const Eigen::VectorXd& b, LinearSolveCost& cost) {
+  prepare(problem, cost);
+  const NonlinearPart D = nonlinear_part(problem, cost);
+  return method_ == LinearStrategy::Schur && !nonlinear_.empty() ? schur_step(D, b, cost) : columns_step(D, b, cost);
+}
+
+std::optional<Eigen::VectorXd> CondensedSolve::reduce(NonlinearProblem& problem, const Eigen::VectorXd& b,
+                                                      LinearSolveCost& cost) {
+  if (method_ != LinearStrategy::Schur || problem.nonlinear_dofs().empty()) return std::nullopt;
+  try {
+    prepare(problem, cost);
+  } catch (const Error&) {
+    uncondensable_ = &problem;
+    return std::nullopt;
+  }
+  const auto t = Clock::now();
+  Eigen::VectorXd r = schur_->reduce(b);
+  cost.solve_seconds += seconds_since(t);
+  return r;
+}
+
+Eigen::VectorXd CondensedSolve::solve_interface(NonlinearProblem& problem, const Eigen::VectorXd& r, LinearSolveCost& cost) {
+  return interface_step(nonlinear_part(problem, cost), r, cost);
+}
+
+Eigen::VectorXd CondensedSolve::expand(const Eigen::VectorXd& b, const Eigen::VectorXd& x_c, LinearSolveCost& cost) {
+  const auto t = Clock::now();
+  Eigen::VectorXd dx = schur_->expand(b, x_c);
+  cost.solve_seconds += seconds_since(t);
+  return dx;
+}
+
+// (S_c + D) x_c = r with r = reduce(b), then dx = expand(b, x_c).
 Eigen::VectorXd CondensedSolve::schur_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost) {
   auto t = Clock::now();
   const Eigen::VectorXd r = schur_->reduce(b);
   cost.solve_seconds += seconds_since(t);
-  t = Clock::now();
+  return expand(b, interface_step(D, r, cost), cost);
+}
+
+// (S_c + D) x_c = r by Woodbury on S_c^-1 over the active dofs I:
+//   x_c = t - S_c^-1[:, I] (1 + D_II S_c^-1[I, I])^-1 D_II t_I,  t = S_c^-1 r.
+Eigen::VectorXd CondensedSolve::interface_step(const NonlinearPart& D, const Eigen::VectorXd& r, LinearSolveCost& cost) {
+  const auto t = Clock::now();
   Eigen::VectorXd x_c;
   const std::vector<int>& active = D.active;
   if (!schur_regular_) {
@@ -189,11 +224,7 @@ Eigen::VectorXd CondensedSolve::schur_step(const NonlinearPart& D, const Eigen::
     }
   }
   cost.condensation_seconds += seconds_since(t);
-  t = Clock::now();
-  Eigen::VectorXd dx = schur_->expand(b, x_c);
-
-  cost.solve_seconds += seconds_since(t);
-  return dx;
+  return x_c;
 }
 
 // With y = A^-1 b and S = P A^-1 P^T: (1 + S_II D_II) z = y_I, then dx = A^-1 (b - P_I^T D_II z).

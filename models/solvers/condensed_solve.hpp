@@ -53,6 +53,19 @@ class CondensedSolve {
   CondensedStep step(NonlinearProblem& problem, const Eigen::VectorXd& b);
   LinearStrategy method() const { return method_; }
 
+  // The Schur step in its three parts, for Newton on the interface alone (reduced_contact_system.hpp),
+  // which reduces once, solves on the interface at every iteration and expands once.
+  // reduce: r = b_c - A_ci A_ii^-1 b_i, factorising A first where needed; empty when this is not the Schur
+  // method, the problem has no nonlinear dofs, or its interior cannot be factorised (as step()).
+  std::optional<Eigen::VectorXd> reduce(NonlinearProblem& problem, const Eigen::VectorXd& b, LinearSolveCost& cost);
+  // (S_c + D) x_c = r, with D the problem's nonlinear part at its last assembly.
+  Eigen::VectorXd solve_interface(NonlinearProblem& problem, const Eigen::VectorXd& r, LinearSolveCost& cost);
+  // The whole solution of A' x = b with x_c on the interface: the backward substitution of the last reduce(),
+  // whose b this must be.
+  Eigen::VectorXd expand(const Eigen::VectorXd& b, const Eigen::VectorXd& x_c, LinearSolveCost& cost);
+  // S_c, the interface matrix of the last reduce().
+  const Eigen::MatrixXd& interface_matrix() const { return schur_->schur(); }
+
  private:
   // Refactorises A when the problem, its linear part or its nonlinear dofs changed.
   void prepare(NonlinearProblem& problem, LinearSolveCost& cost);
@@ -66,7 +79,11 @@ class CondensedSolve {
     Eigen::SparseMatrix<double, Eigen::RowMajor> on_active() const;
     Eigen::MatrixXd whole(int m) const;  // D, m x m
   };
+  // D from the problem's last assembly.
+  NonlinearPart nonlinear_part(NonlinearProblem& problem, LinearSolveCost& cost);
   Eigen::VectorXd schur_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost);
+  // (S_c + D) x_c = r.
+  Eigen::VectorXd interface_step(const NonlinearPart& D, const Eigen::VectorXd& r, LinearSolveCost& cost);
   Eigen::VectorXd columns_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost);
 
   LinearStrategy method_;

@@ -7,6 +7,7 @@
 
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
+#include "models/solvers/reduced_contact_system.hpp"
 
 namespace pc {
 namespace {
@@ -232,10 +233,11 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   // With a tolerance below the floor, the residual of every block within its floor (twice in a row, so that
   // a step that still lands lower is taken) but above its tolerance stagnates there: the solve stops.
   int iterates_at_floor = 0;
-  auto stagnated_at_floor = [&](const std::vector<double>& r,
-                                const std::vector<double>& floors) -> std::optional<NewtonReport> {
+  auto at_floor = [&](const std::vector<double>& r, const std::vector<double>& floors) {
     iterates_at_floor = !floor_counts && within(r, floors, true) ? iterates_at_floor + 1 : 0;
-    if (iterates_at_floor < 2) return std::nullopt;
+    return iterates_at_floor >= 2;
+  };
+  auto floor_report = [&](const std::vector<double>& r, const std::vector<double>& floors) {
     int worst = 0;
     for (int b = 0; b < n_blocks; ++b)
       if (r[b] / std::max(tolerance(b), 1e-300) > r[worst] / std::max(tolerance(worst), 1e-300)) worst = b;
@@ -262,85 +264,175 @@ NewtonReport NewtonSolver::solve(NonlinearProblem& problem) {
   if (problem.residual().size() == 0) return finish(NewtonOutcome::Converged, "initial state satisfies the tolerances");
   if (const std::vector<double> floors = round_off_floors(); residual_converged(norms, floors))
     return finish(NewtonOutcome::Converged, converged_message(norms, floors, "initial state satisfies the tolerances"));
-  else if (auto r = stagnated_at_floor(norms, floors))
-    return *r;
+  else if (at_floor(norms, floors))
+    return floor_report(norms, floors);
   const double merit0 = merit(norms, reference);
   const double divergence_bound = options_.divergence_factor * std::max(merit0, 1.0);
 
-  // Watchdog: the best iterate so far, and the full steps taken since it was last improved on.
-  const bool watchdog = options_.line_search && options_.watchdog > 0;
-  Eigen::VectorXd best;
-  if (watchdog) best = problem.free_values();
-  double best_merit = merit0;
-  int since_best = 0;
+  // The iterations, on the whole system or on the contact dofs (ReducedContactSystem: the same iterates,
+  // with the interior solved once). `system` gives residual(), free values and step(rhs) in its own
+  // coordinates, `space` its blocks there. On the contact dofs, a residual that meets the test, a small
+  // step, the round-off floor and the last iteration end the iterations without a verdict (nullopt): the
+  // whole residual is then assembled and judged.
+  auto iterate = [&](auto& system, const std::vector<ProblemBlock>& space, bool on_contact) -> std::optional<NewtonReport> {
+    std::vector<double> norms = block_norms(space, system.residual());
+    // Watchdog: the best iterate so far, and the full steps taken since it was last improved on.
+    const bool watchdog = options_.line_search && options_.watchdog > 0;
+    Eigen::VectorXd best;
+    if (watchdog) best = system.free_values();
+    double best_merit = merit(norms, reference);
+    int since_best = 0;
 
-  for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
-    report.iterations = iteration;
-    bool restarted = false;
-    if (watchdog && since_best >= options_.watchdog) {
-      problem.set_free_values(best);
-      assemble();
-      norms = block_norms(blocks, problem.residual());
-      since_best = 0;
-      restarted = true;
+    for (int iteration = report.iterations + 1; iteration <= options_.max_iterations; ++iteration) {
+      report.iterations = iteration;
+      bool restarted = false;
+      if (watchdog && since_best >= options_.watchdog) {
+        system.set_free_values(best);
+        system.assemble();
+        norms = block_norms(space, system.residual());
+        since_best = 0;
+        restarted = true;
+      }
+      Eigen::VectorXd dx;
+      try {
+        dx = system.step(-system.residual(), report);
+      } catch (const Error& e) {
+        return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": ", e.what()));
+      }
+      if (auto r = not_finite(block_norms(space, dx), message("iteration ", iteration, ": the Newton increment"))) return *r;
+
+      // Armijo backtracking on the scaled residual (classical mode, or after a watchdog restart); otherwise
+      // the full step, unless it leaves the finite, non-divergent range.
+      const bool armijo = options_.line_search && (!watchdog || restarted);
+      const double merit_before = merit(norms, reference);
+      double alpha = 1, applied = 0;
+      int backtracks = 0;
+      std::vector<double> new_norms;
+      while (true) {
+        system.add_to_free_values((alpha - applied) * dx);
+        applied = alpha;
+        system.assemble();
+        new_norms = block_norms(space, system.residual());
+        const double m = merit(new_norms, reference);
+        const bool accept = !options_.line_search ||
+                            (armijo ? std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before
+                                    : std::isfinite(m) && m <= divergence_bound);
+        if (accept || backtracks >= options_.max_backtracks) break;
+        alpha *= options_.backtrack_factor;
+        ++backtracks;
+      }
+      norms = new_norms;
+      const std::vector<double> steps = block_norms(space, alpha * dx);
+      report.history.push_back({norms, steps, alpha, backtracks, restarted});
+      if (on_iteration_) on_iteration_(report);
+
+      if (auto r = not_finite(norms, message("iteration ", iteration, ": the residual"))) return *r;
+      const std::vector<double> sizes = block_norms(space, system.free_values());
+      if (auto r = not_finite(sizes, message("iteration ", iteration, ": the iterate"))) return *r;
+      const std::vector<double> floors = round_off_floors();
+      if (residual_converged(norms, floors))
+        return on_contact ? std::nullopt
+                          : std::optional(finish(NewtonOutcome::Converged,
+                                                 converged_message(norms, floors, "residual tolerance met")));
+      bool small_step = alpha == 1;
+      for (int b = 0; b < n_blocks; ++b)
+        small_step = small_step && steps[b] <= options_.increment_tolerance * std::max(sizes[b], 1e-300);
+      if (small_step)
+        return on_contact ? std::nullopt : std::optional(finish(NewtonOutcome::Converged, "increment tolerance met"));
+      if (at_floor(norms, floors)) return on_contact ? std::nullopt : std::optional(floor_report(norms, floors));
+      const double m = merit(norms, reference);
+      if (m > divergence_bound)
+        return finish(NewtonOutcome::Diverged, message("iteration ", iteration, ": the scaled residual grew by more than ",
+                                                       options_.divergence_factor));
+      if (m <= (1 - 2 * options_.armijo) * best_merit) {
+        best_merit = m;
+        if (watchdog) best = system.free_values();
+        since_best = 0;
+      } else {
+        ++since_best;
+      }
     }
-    Eigen::VectorXd dx;
+    if (on_contact) return std::nullopt;
+    return finish(NewtonOutcome::MaxIterations, message("no convergence in ", options_.max_iterations, " iterations"));
+  };
+
+  // The problem itself, as `iterate` sees a system.
+  struct Whole {
+    NewtonSolver& solver;
+    NonlinearProblem& problem;
+    const std::function<void()>& assemble_problem;
+    void assemble() { assemble_problem(); }
+    const Eigen::VectorXd& residual() const { return problem.residual(); }
+    Eigen::VectorXd free_values() const { return problem.free_values(); }
+    void set_free_values(const Eigen::VectorXd& x) { problem.set_free_values(x); }
+    void add_to_free_values(const Eigen::VectorXd& step) { problem.add_to_free_values(step); }
+    Eigen::VectorXd step(const Eigen::VectorXd& rhs, NewtonReport& r) { return solver.step(problem, rhs, r); }
+  };
+  const std::function<void()> assemble_problem = assemble;
+  Whole whole{*this, problem, assemble_problem};
+
+  if (std::unique_ptr<ReducedContactSystem> reduced = reduce_to_contact(problem, report)) {
+    // The contact dofs, as `iterate` sees a system: its assembly and steps timed into the report.
+    struct OnContact {
+      ReducedContactSystem& system;
+      NonlinearProblem& problem;
+      NewtonReport& report;
+      void assemble() {
+        const auto t = Clock::now();
+        system.assemble();
+        report.assembly_seconds += seconds_since(t);
+      }
+      const Eigen::VectorXd& residual() const { return system.residual(); }
+      Eigen::VectorXd free_values() const { return system.free_values(); }
+      void set_free_values(const Eigen::VectorXd& x) { system.set_free_values(x); }
+      void add_to_free_values(const Eigen::VectorXd& step) { system.add_to_free_values(step); }
+      Eigen::VectorXd step(const Eigen::VectorXd& rhs, NewtonReport& r) {
+        const double jacobian_before = problem.jacobian_assembly_seconds();
+        Eigen::VectorXd dx = system.step(rhs, r);
+        const double formed = problem.jacobian_assembly_seconds() - jacobian_before;
+        r.jacobian_seconds += formed;
+        r.assembly_seconds += formed;
+        return dx;
+      }
+    } on_contact{*reduced, problem, report};
+    iterates_at_floor = 0;
+    if (auto r = iterate(on_contact, reduced->blocks(), true)) return *r;
+    report.contact_iterations = report.iterations;
+    // The whole solution at the last contact values, and its residual: the verdict is the whole system's.
     try {
-      dx = step(problem, -problem.residual(), report);
+      reduced->expand(report);
     } catch (const Error& e) {
-      return finish(NewtonOutcome::SingularTangent, message("iteration ", iteration, ": ", e.what()));
+      return finish(NewtonOutcome::SingularTangent, message("iteration ", report.iterations, ": ", e.what()));
     }
-    if (auto r = not_finite(block_norms(blocks, dx), message("iteration ", iteration, ": the Newton increment"))) return *r;
-
-    // Armijo backtracking on the scaled residual (classical mode, or after a watchdog restart); otherwise
-    // the full step, unless it leaves the finite, non-divergent range.
-    const bool armijo = options_.line_search && (!watchdog || restarted);
-    const double merit_before = merit(norms, reference);
-    double alpha = 1, applied = 0;
-    int backtracks = 0;
-    std::vector<double> new_norms;
-    while (true) {
-      problem.add_to_free_values((alpha - applied) * dx);
-      applied = alpha;
-      assemble();
-      new_norms = block_norms(blocks, problem.residual());
-      const double m = merit(new_norms, reference);
-      const bool accept = !options_.line_search ||
-                          (armijo ? std::isfinite(m) && m <= (1 - 2 * options_.armijo * alpha) * merit_before
-                                  : std::isfinite(m) && m <= divergence_bound);
-      if (accept || backtracks >= options_.max_backtracks) break;
-      alpha *= options_.backtrack_factor;
-      ++backtracks;
-    }
-    norms = new_norms;
-    const std::vector<double> steps = block_norms(blocks, alpha * dx);
-    report.history.push_back({norms, steps, alpha, backtracks, restarted});
-    if (on_iteration_) on_iteration_(report);
-
-    if (auto r = not_finite(norms, message("iteration ", iteration, ": the residual"))) return *r;
-    const std::vector<double> sizes = block_norms(blocks, problem.free_values());
-    if (auto r = not_finite(sizes, message("iteration ", iteration, ": the iterate"))) return *r;
-    const std::vector<double> floors = round_off_floors();
-    if (residual_converged(norms, floors))
-      return finish(NewtonOutcome::Converged, converged_message(norms, floors, "residual tolerance met"));
-    bool small_step = alpha == 1;
-    for (int b = 0; b < n_blocks; ++b)
-      small_step = small_step && steps[b] <= options_.increment_tolerance * std::max(sizes[b], 1e-300);
-    if (small_step) return finish(NewtonOutcome::Converged, "increment tolerance met");
-    if (auto r = stagnated_at_floor(norms, floors)) return *r;
-    const double m = merit(norms, reference);
-    if (m > divergence_bound)
-      return finish(NewtonOutcome::Diverged, message("iteration ", iteration, ": the scaled residual grew by more than ",
-                                                     options_.divergence_factor));
-    if (m <= (1 - 2 * options_.armijo) * best_merit) {
-      best_merit = m;
-      if (watchdog) best = problem.free_values();
-      since_best = 0;
-    } else {
-      ++since_best;
-    }
+    assemble();
+    const std::vector<double> verified = block_norms(blocks, problem.residual());
+    report.history.back().residual_norms = verified;
+    if (auto r = not_finite(verified, message("iteration ", report.iterations, ": the residual"))) return *r;
+    if (const std::vector<double> floors = round_off_floors(); residual_converged(verified, floors))
+      return finish(NewtonOutcome::Converged, converged_message(verified, floors, "residual tolerance met"));
+    iterates_at_floor = 0;  // the whole system's iterations go on from here
   }
-  return finish(NewtonOutcome::MaxIterations, message("no convergence in ", options_.max_iterations, " iterations"));
+  return *iterate(whole, blocks, false);
+}
+
+std::unique_ptr<ReducedContactSystem> NewtonSolver::reduce_to_contact(NonlinearProblem& problem, NewtonReport& report) {
+  if (!options_.contact_newton || strategy_for(problem) != LinearStrategy::Schur) return nullptr;
+  // The nonlinear rows assembled at x0 are the problem's assembly; the rest is the reduction's, which its
+  // cost counts.
+  const double jacobian_before = problem.jacobian_assembly_seconds();
+  const LinearSolveCost before = report;
+  const auto t = Clock::now();
+  std::unique_ptr<ReducedContactSystem> reduced = ReducedContactSystem::reduce(problem, condensed_, report);
+  const double linear = report.analyze_seconds - before.analyze_seconds + report.factorize_seconds -
+                        before.factorize_seconds + report.solve_seconds - before.solve_seconds +
+                        report.condensation_seconds - before.condensation_seconds;
+  report.assembly_seconds += seconds_since(t) - linear;
+  report.jacobian_seconds += problem.jacobian_assembly_seconds() - jacobian_before;
+  if (reduced) {
+    report.strategy = LinearStrategy::Schur;
+    report.condensed = true;
+  }
+  return reduced;
 }
 
 }  // namespace pc

@@ -15,6 +15,7 @@
 #include "models/solvers/strategy_cost_model.hpp"
 #include "models/solvers/linear_solve_cost.hpp"
 #include "models/solvers/nonlinear_problem.hpp"
+#include "models/solvers/reduced_contact_system.hpp"
 
 namespace pc {
 
@@ -77,6 +78,12 @@ struct NewtonOptions {
   // "auto" keeps the dense matrices of schur within this many bytes (0: no limit); scenes set a quarter of
   // the memory available.
   double dense_memory_budget_bytes = 0;
+  // On the schur path, iterate on the contact dofs alone (models/solvers/reduced_contact_system.hpp): one
+  // forward and one backward substitution and two residuals of the whole system per solve, whatever its
+  // number of iterations, where each iteration of the whole system costs a solve and a residual. The
+  // iterates are the same; false iterates on the whole system (to compare, or for a problem whose
+  // interior must be seen at every iteration).
+  bool contact_newton = true;
 };
 
 enum class NewtonOutcome { Converged, MaxIterations, Diverged, SingularTangent, RoundOffFloor };
@@ -104,6 +111,9 @@ struct NewtonReport : LinearSolveCost {
   bool condensed = false;  // whether a condensed or Krylov step was used
   LinearStrategy strategy = LinearStrategy::Full;  // of the last iteration
   int krylov_iterations = 0;                        // GMRES iterations, over the solve
+  // Of `iterations`, those made on the contact dofs alone (NewtonOptions::contact_newton); the rest, if any,
+  // on the whole system after them.
+  int contact_iterations = 0;
   std::map<std::string, double> diagnostics;  // the problem's, at the end
   std::string message;
   bool converged() const { return outcome == NewtonOutcome::Converged; }
@@ -139,6 +149,9 @@ class NewtonSolver {
   Eigen::VectorXd step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
   Eigen::VectorXd step_by_strategy(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
   Eigen::VectorXd full_step(NonlinearProblem& problem, const Eigen::VectorXd& rhs, NewtonReport& report);
+  // The problem reduced to its contact dofs at its current (assembled) iterate, where contact_newton and
+  // the schur path apply; null otherwise.
+  std::unique_ptr<ReducedContactSystem> reduce_to_contact(NonlinearProblem& problem, NewtonReport& report);
 
   NewtonOptions options_;
   std::function<void(const NewtonReport&)> on_iteration_;

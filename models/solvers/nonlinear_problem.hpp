@@ -47,6 +47,16 @@ class NonlinearProblem {
   // reads of J; a problem that sums its nonlinear terms apart (Model) gives it without forming J, and
   // exactly, where the default takes J's values less A's.
   virtual void nonlinear_part(std::vector<double>& values);
+  // The nonlinear terms' residual N(x) on the rows of nonlinear_dofs(), in their order, at the current free
+  // values, and their tangent for nonlinear_part() at the same values: R(x) = A x + N(x) + c with A the
+  // linear part and c constant within the solve. It reads only the nonlinear dofs' values, and assembles
+  // nothing else, so Newton can iterate on the contact dofs alone (models/solvers/reduced_contact_system.hpp)
+  // with the interior solved once per solve. Returns false for a problem that cannot give it (the default;
+  // Newton then iterates on the whole system).
+  virtual bool assemble_nonlinear_rows(Eigen::VectorXd& rows) {
+    (void)rows;
+    return false;
+  }
 
   // The blocks, in order, covering x.
   virtual std::vector<ProblemBlock> blocks() const = 0;

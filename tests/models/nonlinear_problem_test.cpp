@@ -109,6 +109,7 @@ class SpringChain : public NonlinearProblem {
     f_[0] = 1;
   }
   void assemble(bool tangent) override {
+    ++whole_assemblies;
     const Eigen::VectorXd internal = linear_ * x_;
     residual_ = internal - f_;
     scales_ = {std::max(internal.norm(), f_.norm())};
@@ -131,6 +132,24 @@ class SpringChain : public NonlinearProblem {
   void set_free_values(const Eigen::VectorXd& x) override { x_ = x; }
   void add_to_free_values(const Eigen::VectorXd& step) override { x_ += step; }
   std::map<std::string, double> diagnostics() const override { return {}; }
+  // The ground springs' forces on the nonlinear rows, and their tangent: what Newton on the contact dofs
+  // reads (unless gives_nonlinear_rows is false).
+  bool assemble_nonlinear_rows(Eigen::VectorXd& rows) override {
+    if (!gives_nonlinear_rows) return false;
+    rows = Eigen::VectorXd::Zero(Eigen::Index(nonlinear_.size()));
+    jacobian_ = linear_;
+    for (size_t k = 0; k < nonlinear_.size(); ++k) {
+      const int i = nonlinear_[k];
+      if (std::find(held_.begin(), held_.end(), i) == held_.end()) continue;
+      const double x = x_[i];
+      rows[Eigen::Index(k)] = x + cubic_ * x * x * x;
+      jacobian_.coeffRef(i, i) += 1 + 3 * cubic_ * x * x;
+    }
+    return true;
+  }
+
+  bool gives_nonlinear_rows = true;
+  int whole_assemblies = 0;  // assemble() calls: residuals of the whole system
 
  private:
   int n_;
@@ -225,6 +244,55 @@ TEST(NonlinearProblem, TheSchurPathsWoodburySystemOnTheActiveDofsReachesTheFullS
     EXPECT_EQ(report.dense_factorizations, report.iterations) << held_count;
     EXPECT_LT((condensed.free_values() - full.free_values()).norm(), 1e-12 * full.free_values().norm()) << held_count;
   }
+}
+
+// Newton on the contact dofs (NewtonOptions::contact_newton, reduced_contact_system.hpp) takes the whole
+// system's iterates: the same number of iterations, the same residual norms block by block (the interior's
+// residual is zero once the first step lands on it), the same answer. It assembles the whole residual
+// twice, at the start and to verify, where the whole system's iterations assemble it once per iteration;
+// a problem that cannot assemble its nonlinear rows alone is iterated on the whole system.
+TEST(NonlinearProblem, NewtonOnTheContactDofsTakesTheWholeSystemsIteratesWithTwoWholeResiduals) {
+  const int n = 60;
+  const std::vector<int> held = {10, 25, 40, 59}, unheld = {5, 33};
+  NewtonOptions whole_options;
+  whole_options.condensation = "schur";
+  whole_options.contact_newton = false;
+  SpringChain whole(n, true, held, 1.0, unheld);
+  const NewtonReport on_whole = NewtonSolver(whole_options).solve(whole);
+  ASSERT_TRUE(on_whole.converged()) << on_whole.message;
+  EXPECT_EQ(on_whole.contact_iterations, 0);
+  EXPECT_EQ(whole.whole_assemblies, on_whole.iterations + 1);
+
+  NewtonOptions options = whole_options;
+  options.contact_newton = true;
+  SpringChain reduced(n, true, held, 1.0, unheld);
+  const NewtonReport on_contact = NewtonSolver(options).solve(reduced);
+  ASSERT_TRUE(on_contact.converged()) << on_contact.message;
+  EXPECT_GE(on_contact.iterations, 3) << "the cubic springs need several iterations";
+  EXPECT_EQ(on_contact.iterations, on_whole.iterations);
+  EXPECT_EQ(on_contact.contact_iterations, on_contact.iterations);
+  EXPECT_EQ(reduced.whole_assemblies, 2) << "the residual of the whole system at the start and at the end";
+  EXPECT_EQ(on_contact.factorizations, 1);
+  EXPECT_EQ(on_contact.dense_factorizations, on_contact.iterations);
+  EXPECT_LT((reduced.free_values() - whole.free_values()).norm(), 1e-12 * whole.free_values().norm());
+  // The iterates' residuals, until they reach round-off: the same to a few digits past the largest.
+  ASSERT_EQ(on_contact.history.size(), on_whole.history.size());
+  const double first = on_whole.history[0].residual_norms[0];
+  for (size_t k = 0; k < on_whole.history.size(); ++k) {
+    const double expected = on_whole.history[k].residual_norms[0];
+    EXPECT_NEAR(on_contact.history[k].residual_norms[0], expected, 1e-9 * first + 1e-6 * expected) << "iteration " << k;
+  }
+  // The verdict is the whole residual's: the last entry is it, and it meets the tolerance.
+  reduced.assemble(false);
+  EXPECT_EQ(on_contact.history.back().residual_norms[0], reduced.residual().norm());
+
+  SpringChain without_rows(n, true, held, 1.0, unheld);
+  without_rows.gives_nonlinear_rows = false;
+  const NewtonReport fallback = NewtonSolver(options).solve(without_rows);
+  ASSERT_TRUE(fallback.converged()) << fallback.message;
+  EXPECT_EQ(fallback.contact_iterations, 0);
+  EXPECT_EQ(without_rows.whole_assemblies, fallback.iterations + 1);
+  EXPECT_LT((without_rows.free_values() - whole.free_values()).norm(), 1e-12 * whole.free_values().norm());
 }
 
 // Past condensed_max_dofs nonlinear dofs the dense work (m^3) would exceed a full factorisation's: the

@@ -89,16 +89,22 @@ TEST(PaperScene, ResultsConvergeUnderMeshAndTimeStepRefinement) {
   EXPECT_LT(change_fine, 1e-6 * std::abs(time_values[2]));
 }
 
-// The condensed Newton solve (linear part factorised once, contact dofs through a small dense system)
-// and the plain one (a factorisation per iteration) are the same method: same iterates to round-off.
+// The condensed Newton solve (linear part factorised once, contact dofs through a small dense system;
+// by default iterating on the contact dofs alone, solver.contact_newton) and the plain one (a factorisation
+// per iteration) are the same method: same iterates to round-off.
 TEST(PaperScene, CondensedAndFullNewtonSolvesAgree) {
   for (const std::string name : {"insulated", "conductive"}) {
     const Scene condensed = coarse({"solver.condensed=true"});
+    const Scene whole = coarse({"solver.condensed=true", "solver.contact_newton=false"});
     const Scene full = coarse({"solver.condensed=false"});
     const FoundationRunResult a = run_foundation(condensed, find_foundation(condensed, name), "", false);
+    const FoundationRunResult w = run_foundation(whole, find_foundation(whole, name), "", false);
     const FoundationRunResult b = run_foundation(full, find_foundation(full, name), "", false);
-    ASSERT_TRUE(a.completed && b.completed) << a.message << b.message;
+    ASSERT_TRUE(a.completed && w.completed && b.completed) << a.message << w.message << b.message;
     EXPECT_EQ(a.newton_iterations_total, b.newton_iterations_total) << name;
+    EXPECT_EQ(w.newton_iterations_total, b.newton_iterations_total) << name;
+    EXPECT_NEAR(w.uy_corner, b.uy_corner, 1e-8 * std::abs(b.uy_corner)) << name;
+    EXPECT_NEAR(w.phi_center, b.phi_center, 1e-8 * std::abs(b.phi_center) + 1e-12) << name;
     // The condensed path factorises at most once for the initial potential and once for the steps: the
     // equal steps keep one size to the end (the last one is not shortened by the round-off of t).
     EXPECT_LE(a.factorizations, 2) << name;

@@ -87,6 +87,7 @@ TEST(Registry, CheckRefusesWhatRunWouldRefuseWithTheKeyAndTheValue) {
       {{"mesh.gmsh=strip2d.geo"}, "'mesh' gives both generator and gmsh"},
       {{"material.viscosity_tau_v=0.02"}, "'material.viscosity_A' and 'material.viscosity_tau_v' disagree"},
       {{"solver.condensed_max_dofs=-1"}, "'solver.condensed_max_dofs'"},
+      {{"solver.contact_newton=2"}, "'solver.contact_newton'"},
   };
   for (const auto& [overrides, expected] : cases) EXPECT_CONTAINS(problem(overrides), expected);
 }
