@@ -595,24 +595,24 @@ bool Model::assemble_nonlinear_rows(Eigen::VectorXd& rows) {
   System& s = system();
   require(s.linear_sum > 0, "Model: assemble_nonlinear_rows() before assemble(true)");
   require_factors_of_last_tangent(s, "assemble_nonlinear_rows()");
-  for (const std::string& u : unknown_names_) {
-    Eigen::VectorXd& sum = nonlinear_scratch_[u];
-    if (sum.size() != space(u).num_dofs()) sum.resize(space(u).num_dofs());
-    sum.setZero();
-  }
-  // Each nonlinear brick's element loops, as in assemble(true), summed per unknown; their tangent blocks
-  // are what nonlinear_part() sums.
-  for (int b = 0; b < int(bricks_.size()); ++b) {
-    if (bricks_[b]->linear()) continue;
-    for (BoundTerm& bt : brick_states_[b]->terms) {
-      std::vector<const Eigen::VectorXd*> values;
-      for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
-      std::vector<Eigen::VectorXd*> outputs;
-      for (const std::string& u : bt.test_unknowns) outputs.push_back(&nonlinear_scratch_.at(u));
-      bt.assembly->assemble(values, time_, outputs, true);
+  // At the values and time of the last assembly with the tangent (the start of a Newton solve), its sums
+  // stand. Otherwise each nonlinear brick's element loops, as in assemble(true), summed per unknown; their
+  // tangent blocks are what nonlinear_part() sums.
+  if (nonlinear_rows_at_ != std::pair{clock_, time_}) {
+    for (const std::string& u : unknown_names_) nonlinear_scratch_.at(u).setZero();
+    for (int b = 0; b < int(bricks_.size()); ++b) {
+      if (bricks_[b]->linear()) continue;
+      for (BoundTerm& bt : brick_states_[b]->terms) {
+        std::vector<const Eigen::VectorXd*> values;
+        for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
+        std::vector<Eigen::VectorXd*> outputs;
+        for (const std::string& u : bt.test_unknowns) outputs.push_back(&nonlinear_scratch_.at(u));
+        bt.assembly->assemble(values, time_, outputs, true);
+      }
     }
+    s.jacobian_current = false;
+    nonlinear_rows_at_ = {clock_, time_};
   }
-  s.jacobian_current = false;
   Eigen::VectorXd global = Eigen::VectorXd::Zero(s.layout.size());
   for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), nonlinear_scratch_.at(u), global);
   rows = global(s.nonlinear_dofs);
@@ -704,6 +704,7 @@ void Model::assemble(bool tangent) {
   std::map<std::string, Eigen::VectorXd> brick_residual;  // one brick's contribution, to measure it
   for (const std::string& u : unknown_names_) {
     field_residuals_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
+    nonlinear_scratch_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
     brick_residual[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
     residual_scales_[u] = 0;
     round_off_scales_[u] = 0;
@@ -841,6 +842,7 @@ void Model::assemble(bool tangent) {
       for (const std::string& u : touched) {
         Eigen::VectorXd& share = brick_residual.at(u);  // distributed: of this process's elements
         processes::sum({share.data(), size_t(share.size())});
+        nonlinear_scratch_.at(u) += share;  // assemble_nonlinear_rows() gives these at the same values
         measure_and_add(u, b);
       }
       continue;
@@ -908,6 +910,7 @@ void Model::assemble(bool tangent) {
       s.linear_sum = ++linear_sums_;
     }
     s.jacobian_current = false;  // formed by jacobian() when asked for
+    nonlinear_rows_at_ = {clock_, time_};
     jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 

@@ -224,7 +224,10 @@ class Model : public DataView, public NonlinearProblem {
   std::map<std::string, double> residual_scales_;
   std::map<std::string, double> round_off_scales_;
   std::vector<double> product_rows_, gross_rows_;  // scratch of the residual's products, per row
-  std::map<std::string, Eigen::VectorXd> nonlinear_scratch_;  // per unknown: assemble_nonlinear_rows()'s sums
+  // Per unknown, the nonlinear bricks' residual at the last assemble(true) or assemble_nonlinear_rows(), and
+  // the values' version (clock_) and time it is of.
+  std::map<std::string, Eigen::VectorXd> nonlinear_scratch_;
+  std::pair<std::uint64_t, double> nonlinear_rows_at_{~std::uint64_t(0), 0.0};
   Eigen::VectorXd residual_;
   std::uint64_t clock_ = 0;           // version source for constants and data fields
   std::uint64_t linear_version_ = 1;  // changes when a linear brick's blocks change
