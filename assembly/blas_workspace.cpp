@@ -1,14 +1,16 @@
 #include "assembly/blas_workspace.hpp"
 
+#include <cstddef>
 #include <cstdlib>
 #include <mutex>
 #include <vector>
 
 #include "assembly/error.hpp"
 
+// As Fortran calls it (blas_vector_forwarding.cpp): the lengths of the character arguments at the end.
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n, const int* k,
                        const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,
-                       const double* beta, double* c, const int* ldc);
+                       const double* beta, double* c, const int* ldc, std::size_t, std::size_t);
 
 namespace pc {
 
@@ -29,7 +31,7 @@ void reserve_blas_workspace() {
     constexpr int n = 256;
     std::vector<double> a(n * n, 0.0), b(n * n, 0.0), c(n * n, 0.0);
     const double one = 1, zero = 0;
-    dgemm_("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
+    dgemm_("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n, 1, 1);
   });
 }
 
