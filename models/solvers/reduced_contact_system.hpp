@@ -6,9 +6,11 @@
 // contact values, the whole residual is zero on the interior and, on c,
 //   rho(x_c) = rho_0 + S_c (x_c - x_c0) + N(x_c) - N(x_c0),   rho_0 = R_c(x0) - A_ci A_ii^-1 R_i(x0),
 // where S_c = A_cc - A_ci A_ii^-1 A_ic is the Schur complement the condensed solve keeps. Newton on rho with
-// the tangent S_c + D (D = dN/dx_c) takes the very iterates of Newton on the whole system from x0 (its
-// first step lands on the interior's solution, and every step after keeps it there), and each block's norm
-// of rho is that of the whole residual. So the iterations in between need no sparse solve and no residual of
+// the tangent S_c + D (D = dN/dx_c) takes the very iterates of Newton on the whole system from x0 while it
+// takes full steps (its first step lands on the interior's solution, and every step after keeps it there),
+// and each block's norm of rho is that of the whole residual. A backtracking line search differs: on the
+// contact dofs it weighs rho, the residual with the interior solved, not the whole residual partway to it.
+// So the iterations in between need no sparse solve and no residual of
 // the whole system: a solve is one forward substitution (reduce) at the start and one backward
 // substitution (expand) at the end, and an iteration is the contact bricks' element loops and dense work
 // on the contact dofs. The whole residual is assembled again at the end, to verify.
