@@ -1,6 +1,6 @@
 #include "models/output/csv_log.hpp"
 
-#include <cstdio>
+#include <charconv>
 #include <filesystem>
 #include <sstream>
 
@@ -29,13 +29,22 @@ void write_header(std::ostream& out, const std::vector<std::string>& columns) {
   out << '\n';
 }
 
+// Each value in the shortest text that reads back as the same double (std::to_chars), several times
+// faster than printf's "%.17g", which the final tables (a row per node and per cell) spent most of their
+// time in, and shorter.
 void write_row(std::ostream& out, const std::vector<double>& values) {
-  char text[32];
+  char text[32 * 64];
+  size_t used = 0;
   for (size_t i = 0; i < values.size(); ++i) {
-    std::snprintf(text, sizeof text, "%.17g", values[i]);
-    out << (i ? "," : "") << text;
+    if (used + 32 > sizeof text) {
+      out.write(text, std::streamsize(used));
+      used = 0;
+    }
+    if (i) text[used++] = ',';
+    used = size_t(std::to_chars(text + used, text + sizeof text, values[i]).ptr - text);
   }
-  out << '\n';
+  text[used++] = '\n';
+  out.write(text, std::streamsize(used));
 }
 
 }  // namespace
