@@ -18,8 +18,12 @@
 // On a shared machine the run's phases include the time the process waits for a core (a step's solve then
 // takes 4 ms longer now and then at 120 x 40), which the median of the timed solves leaves out: the two
 // ratios are then too large by the load's share.
-// Prints a markdown table and writes a CSV row per mesh.
+//   "solve phase per step [solves]": the solve phase over the steps, in that unit (1: one solve pair per
+//                       step, as Newton on the contact dofs makes; the time estimate's solve adds one).
+// Prints a markdown table and writes a CSV row per mesh. Further arguments are scene overrides, as --set
+// takes them (time.error_estimate=none: without the time estimate, as the GetFEM runs).
 //   build/release/benchmarks/step_breakdown_study [steps=200] [sizes=120x40,240x80] [out=step_breakdown.csv]
+//                                                 [key=value ...]
 // Run it with `nice` on a shared machine; timings are of one run each.
 #include <algorithm>
 #include <chrono>
@@ -98,11 +102,12 @@ struct Breakdown {
   int one_iteration_steps = 0;
 };
 
-Breakdown run_mesh(int nx, int ny, int steps) {
-  const Scene scene = load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/paper2d.json",
-                                      {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny),
-                                       "time.steps=" + std::to_string(steps),
-                                       "time.T=" + std::to_string(0.2 * steps / 200.0)});
+Breakdown run_mesh(int nx, int ny, int steps, const std::vector<std::string>& extra_overrides) {
+  std::vector<std::string> overrides = {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny),
+                                        "time.steps=" + std::to_string(steps),
+                                        "time.T=" + std::to_string(0.2 * steps / 200.0)};
+  overrides.insert(overrides.end(), extra_overrides.begin(), extra_overrides.end());
+  const Scene scene = load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/paper2d.json", overrides);
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("step_breakdown_" + std::to_string(nx) + "x" + std::to_string(ny));
   std::filesystem::remove_all(dir);
@@ -138,9 +143,10 @@ int main(int argc, char** argv) {
   const int steps = argc > 1 ? std::atoi(argv[1]) : 200;
   const auto sizes = parse_sizes(argc > 2 ? argv[2] : "120x40,240x80");
   const std::string out = argc > 3 ? argv[3] : "step_breakdown.csv";
+  const std::vector<std::string> overrides(argv + std::min(argc, 4), argv + argc);
   std::vector<Breakdown> runs;
   for (const auto& [nx, ny] : sizes) {
-    runs.push_back(run_mesh(nx, ny, steps));
+    runs.push_back(run_mesh(nx, ny, steps, overrides));
     const Breakdown& b = runs.back();
     std::fprintf(stderr, "%d x %d: %d dofs, %s in %.2f s\n", nx, ny, b.result.ndof,
                  b.result.completed ? "completed" : "STOPPED", b.result.wall_seconds);
@@ -184,6 +190,9 @@ int main(int argc, char** argv) {
   });
   row("solve phase per Newton iteration", [&](const Breakdown& b) {
     return text("%.2f ms", 1e3 * b.result.solve_seconds / b.result.newton_iterations_total);
+  });
+  row("solve phase per step [solves]", [&](const Breakdown& b) {
+    return text("%.2f", b.result.solve_seconds / b.result.steps / b.one_solve.in_iteration);
   });
   row("Newton iteration [solves]", [&](const Breakdown& b) { return text("%.2f", b.iteration_in_solves); });
   row("step of one Newton iteration [solves]", [&](const Breakdown& b) {
