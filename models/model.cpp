@@ -702,6 +702,7 @@ void Model::refresh_linear_sum(System& s) {
 void Model::assemble(bool tangent) {
   System& s = system();
   std::map<std::string, Eigen::VectorXd> brick_residual;  // one brick's contribution, to measure it
+  nonlinear_rows_at_ = {~std::uint64_t(0), 0.0};  // the kept rows stand again only once this assembly ends
   for (const std::string& u : unknown_names_) {
     field_residuals_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
     nonlinear_scratch_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());

@@ -168,6 +168,10 @@ std::optional<Eigen::VectorXd> CondensedSolve::reduce(NonlinearProblem& problem,
     uncondensable_ = &problem;
     return std::nullopt;
   }
+  return timed_reduce(b, cost);
+}
+
+Eigen::VectorXd CondensedSolve::timed_reduce(const Eigen::VectorXd& b, LinearSolveCost& cost) {
   const auto t = Clock::now();
   Eigen::VectorXd r = schur_->reduce(b);
   cost.solve_seconds += seconds_since(t);
@@ -187,10 +191,7 @@ Eigen::VectorXd CondensedSolve::expand(const Eigen::VectorXd& b, const Eigen::Ve
 
 // (S_c + D) x_c = r with r = reduce(b), then dx = expand(b, x_c).
 Eigen::VectorXd CondensedSolve::schur_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost) {
-  auto t = Clock::now();
-  const Eigen::VectorXd r = schur_->reduce(b);
-  cost.solve_seconds += seconds_since(t);
-  return expand(b, interface_step(D, r, cost), cost);
+  return expand(b, interface_step(D, timed_reduce(b, cost), cost), cost);
 }
 
 // (S_c + D) x_c = r by Woodbury on S_c^-1 over the active dofs I:

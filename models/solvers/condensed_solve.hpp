@@ -79,6 +79,8 @@ class CondensedSolve {
     Eigen::SparseMatrix<double, Eigen::RowMajor> on_active() const;
     Eigen::MatrixXd whole(int m) const;  // D, m x m
   };
+  // schur_->reduce(b), its time counted as the solve's.
+  Eigen::VectorXd timed_reduce(const Eigen::VectorXd& b, LinearSolveCost& cost);
   // D from the problem's last assembly.
   NonlinearPart nonlinear_part(NonlinearProblem& problem, LinearSolveCost& cost);
   Eigen::VectorXd schur_step(const NonlinearPart& D, const Eigen::VectorXd& b, LinearSolveCost& cost);
