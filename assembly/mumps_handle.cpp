@@ -73,20 +73,16 @@ void MumpsHandle::set_pattern(const CsrMatrix& a, Symmetry symmetry) {
         entries -= a.innerIndexPtr()[slot] > row;
   rows_.clear();
   cols_.clear();
-  lower_slots_.clear();
   rows_.shrink_to_fit();
   cols_.shrink_to_fit();
-  lower_slots_.shrink_to_fit();
   rows_.reserve(entries);
   cols_.reserve(entries);
-  if (symmetry == Symmetric) lower_slots_.reserve(entries);
   for (int row = 0; row < a.rows(); ++row)
     for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
       const int col = a.innerIndexPtr()[slot];
       if (symmetry == Symmetric && col > row) continue;
       rows_.push_back(row + 1);
       cols_.push_back(col + 1);
-      if (symmetry == Symmetric) lower_slots_.push_back(slot);
     }
   mumps_.n = static_cast<MUMPS_INT>(a.rows());
   if (distributed()) {
@@ -122,9 +118,16 @@ void MumpsHandle::set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scal
   // MUMPS only reads the values; its C interface is not const-correct.
   double* values = const_cast<double*>(a.valuePtr());
   if (symmetry() == Symmetric) {
-    scaled_values_.resize(lower_slots_.size());
-    for (size_t entry = 0; entry < lower_slots_.size(); ++entry)
-      scaled_values_[entry] = row_scale[rows_[entry] - 1] * a.valuePtr()[lower_slots_[entry]];
+    // The lower triangle in set_pattern's order, found again from the pattern rather than kept as a list
+    // of slots (an int per entry, for the whole run).
+    require(a.rows() == mumps_.n && a.isCompressed(), "MUMPS (", owner_, "): values of another pattern");
+    scaled_values_.resize(rows_.size());
+    size_t entry = 0;
+    for (int row = 0; row < a.rows(); ++row)
+      for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
+        if (a.innerIndexPtr()[slot] <= row && entry < scaled_values_.size())
+          scaled_values_[entry++] = row_scale[row] * a.valuePtr()[slot];
+    require(entry == scaled_values_.size(), "MUMPS (", owner_, "): values of another pattern");
     values = scaled_values_.data();
   }
   (distributed() ? mumps_.a_loc : mumps_.a) = values;

@@ -60,7 +60,6 @@ class MumpsHandle {
   Scope scope_;
   DMUMPS_STRUC_C mumps_{};
   std::vector<MUMPS_INT> rows_, cols_;
-  std::vector<int> lower_slots_;  // Symmetric: the slots of `a` in the lower triangle, in MUMPS's order
   std::vector<double> scaled_values_;
 };
 

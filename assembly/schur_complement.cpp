@@ -19,8 +19,7 @@ void SchurComplement::analyze(const CsrMatrix& a, const std::vector<int>& interf
     seen[dof] = 1;
   }
   interface_ = interface;
-  symmetrizer_.emplace(a);
-  scale_ = symmetrizer_->scale(a);
+  scale_ = symmetrizing_row_scale(a);
   listvar_.resize(interface.size());
   for (size_t k = 0; k < interface.size(); ++k) listvar_[k] = interface[k] + 1;
   const auto m = static_cast<MUMPS_INT>(interface.size());
@@ -49,7 +48,10 @@ void SchurComplement::factorize(const CsrMatrix& a) {
           "Schur complement: the matrix contains NaN/Inf");
   factorized_ = false;
   // New values may have lost (or gained) the symmetry the analysis was made for: then it is made anew.
-  std::optional<Eigen::VectorXd> scale = symmetrizer_->scale(a);
+  // The test's map of transposed entries (an int per entry) is made for each factorisation and freed
+  // before MUMPS factorises, the run's peak of memory: a Schur complement is factorised once per step
+  // size, and the map costs a pass over the pattern.
+  std::optional<Eigen::VectorXd> scale = symmetrizing_row_scale(a);
   if (bool(scale) != bool(scale_)) analyze(a, std::vector<int>(interface_));
   scale_ = std::move(scale);
   // MUMPS reads the values only here: without iterative refinement or error analysis (ICNTL(10),

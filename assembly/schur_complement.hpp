@@ -50,8 +50,7 @@ class SchurComplement {
   std::vector<int> interface_;
   std::vector<MUMPS_INT> listvar_;
   Eigen::MatrixXd schur_;
-  std::optional<RowSymmetrizer> symmetrizer_;  // for the analysed pattern
-  std::optional<Eigen::VectorXd> scale_;       // the symmetrizing row scale, when the factorisation is LDL^T
+  std::optional<Eigen::VectorXd> scale_;  // the symmetrizing row scale, when the factorisation is LDL^T
   bool analyzed_ = false, factorized_ = false;
 };
 
