@@ -619,6 +619,54 @@ bool Model::assemble_nonlinear_rows(Eigen::VectorXd& rows) {
   return true;
 }
 
+bool Model::residual_derivative(const std::map<std::string, Eigen::VectorXd>& change, Eigen::VectorXd& out) const {
+  const auto system_of_frozen = systems_.find(frozen_);
+  if (processes::distributed() || system_of_frozen == systems_.end()) return false;
+  const System& s = *system_of_frozen->second;
+  // How each field moves: a changed datum by its direction, an affine field by its coefficients' sum of
+  // its history's.
+  std::map<std::string, Eigen::VectorXd> moved;
+  for (const auto& [name, direction] : change) {
+    const Field& f = field(name);
+    require(f.kind == FieldKind::Data, "Model: residual_derivative() along '", name, "', which is not a data field");
+    require(direction.size() == f.space->num_dofs(), "Model: residual_derivative() along '", name, "' with ",
+            direction.size(), " values, its space has ", f.space->num_dofs(), " dofs");
+    moved[name] = direction;
+  }
+  for (const auto& [name, f] : fields_) {
+    if (f->kind != FieldKind::Affine) continue;
+    for (size_t i = 0; i < f->history.size(); ++i) {
+      const auto direction = change.find(f->history[i]);
+      if (direction == change.end() || f->coefficients[i] == 0) continue;
+      auto [it, inserted] = moved.try_emplace(name, Eigen::VectorXd::Zero(f->space->num_dofs()));
+      it->second += f->coefficients[i] * direction->second;
+    }
+  }
+  std::map<std::string, Eigen::VectorXd> per_unknown;
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    const BrickState& state = *brick_states_[b];
+    for (const auto& [name, seen] : state.constant_versions)
+      if (constants_.at(name).second != seen) return false;
+    for (const BoundTerm& bt : state.terms) {
+      for (const std::string& name : bt.field_names) {
+        if (!moved.count(name)) continue;
+        const bool coupled = std::count(bt.trial_fields.begin(), bt.trial_fields.end(), name) > 0;
+        if (!bricks_[b]->linear() || !state.tangent_valid || !coupled) return false;
+      }
+      for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
+        const auto direction = moved.find(bt.trial_fields[k]);
+        if (direction == moved.end()) continue;
+        const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
+        auto [it, inserted] = per_unknown.try_emplace(u, Eigen::VectorXd::Zero(space(u).num_dofs()));
+        it->second += bt.assembly->block(int(k)) * direction->second;
+      }
+    }
+  }
+  out = Eigen::VectorXd::Zero(s.layout.size());
+  for (const auto& [u, r] : per_unknown) s.layout.add_to_global(s.layout.field_index(u), r, out);
+  return true;
+}
+
 template <class Add>
 void Model::for_each_block(const System& s, bool linear, Add&& add) const {
   for (int b = 0; b < int(bricks_.size()); ++b) {

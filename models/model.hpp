@@ -130,6 +130,15 @@ class Model : public DataView, public NonlinearProblem {
   // The free dofs (global numbering) whose rows or columns the nonlinear bricks fill: J - linear_jacobian()
   // vanishes outside these rows and columns (for the paper, the contact boundary's dofs).
   const std::vector<int>& nonlinear_dofs() override;
+  // The residual's derivative along a change of data fields (e.g. the time scheme's history u_prev, v_prev:
+  // `change` maps each to its direction), on the free dofs as residual(): dR/dd . change. It is the
+  // linear bricks' blocks times the change of the affine fields they are coupled to (an affine field moves
+  // by sum_i c_i change_i over its history), with no element loop, and exact (a linear brick's residual is
+  // linear in its fields) where a difference of residuals is off by its step. False, `out` untouched, when
+  // the blocks do not give it: a nonlinear brick reads a changed field (a datum or an affine field of one),
+  // a linear brick reads one without being coupled to it (its R0 moves), its blocks are not those of its
+  // current constants, or the model is distributed. A difference of residuals does then.
+  bool residual_derivative(const std::map<std::string, Eigen::VectorXd>& change, Eigen::VectorXd& out) const;
   // Residual of one unknown in its field numbering (all dofs, constrained ones included): reactions.
   const Eigen::VectorXd& field_residual(const std::string& unknown) const;
   // Keeps these bricks' own residuals at every assembly from now on, so that what one brick does can be

@@ -220,12 +220,27 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
     put(carried, v_prev, backfilled.at(v), through_a);
   }
 
-  // The response of the step's solution to a history perturbation P, linearised: J dx = -(dR/dh) P, the
-  // derivative taken by a difference of residuals (exact for the linear bricks).
-  // The converged assembly is kept whole, to be put back after the perturbed ones (not assembled again).
-  Model::ResidualSnapshot converged = model.take_residual_snapshot();
-  const Eigen::VectorXd& converged_residual = converged.residual;
+  // The response of the step's solution to a history perturbation P, linearised: J dx = -(dR/dh) P. The
+  // derivative is the linear bricks' blocks times P (Model::residual_derivative: exact, no element loop)
+  // or, where a brick that is not linear reads the history, a difference of residuals. The converged
+  // assembly is then kept whole, to be put back after the perturbed ones (not assembled again).
+  std::optional<Model::ResidualSnapshot> converged;
   const DofLayout& layout = model.layout();
+  const auto derivative = [&](const FieldVectors& perturbation, double largest_history, double largest_perturbation) {
+    Eigen::VectorXd dR;
+    if (model.residual_derivative(perturbation, dR)) return dR;
+    if (!converged) converged = model.take_residual_snapshot();
+    const double eps = 1e-7 * std::max(largest_history, 1e-300) / largest_perturbation;
+    FieldVectors kept;
+    for (const auto& [h, p] : perturbation) {
+      kept[h] = model.values(h);
+      model.set_values(h, kept[h] + eps * p);
+    }
+    model.assemble(false);
+    dR = (model.residual() - converged->residual) / eps;
+    for (const auto& [h, values] : kept) model.set_values(h, values);
+    return dR;
+  };
   const auto response = [&](const FieldVectors& perturbation) {
     double largest_history = 0, largest_perturbation = 0;
     for (const auto& [h, p] : perturbation) {
@@ -235,15 +250,7 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
     FieldVectors delta;
     for (const std::string& f : model.unknowns()) delta[f] = Eigen::VectorXd::Zero(model.values(f).size());
     if (largest_perturbation > 0) {
-      const double eps = 1e-7 * std::max(largest_history, 1e-300) / largest_perturbation;
-      FieldVectors kept;
-      for (const auto& [h, p] : perturbation) {
-        kept[h] = model.values(h);
-        model.set_values(h, kept[h] + eps * p);
-      }
-      model.assemble(false);
-      const Eigen::VectorXd dR = (model.residual() - converged_residual) / eps;
-      for (const auto& [h, values] : kept) model.set_values(h, values);
+      const Eigen::VectorXd dR = derivative(perturbation, largest_history, largest_perturbation);
       const Eigen::VectorXd dx = solve(-dR);
       for (const std::string& f : model.unknowns()) layout.add_from_global(layout.field_index(f), dx, delta[f]);
     }
@@ -265,7 +272,7 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
     from_history = response(carried);
     for (const auto& [f, d] : from_history) from_step[f] = Eigen::VectorXd::Zero(d.size());
   }
-  model.restore_residual(std::move(converged));  // for what reads the residual after the step
+  if (converged) model.restore_residual(std::move(*converged));  // for what reads the residual after the step
 
   Propagated out;
   for (const std::string& f : fields_) {

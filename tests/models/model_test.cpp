@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 
 #include "assembly/error.hpp"
@@ -11,6 +12,8 @@
 #include "bricks/dirichlet_brick.hpp"
 #include "bricks/elasticity_brick.hpp"
 #include "bricks/inertia_brick.hpp"
+#include "bricks/laws/normal_laws.hpp"
+#include "bricks/normal_response_brick.hpp"
 #include "bricks/permittivity_brick.hpp"
 #include "bricks/piezoelectric_brick.hpp"
 #include "bricks/source_bricks.hpp"
@@ -31,7 +34,8 @@ struct Bulk {
   BackwardEuler scheme;
   int inertia = -1, viscosity = -1, elasticity = -1, piezo = -1, permittivity = -1, traction = -1;
 
-  Bulk() {
+  // `extra` adds bricks (and their constants) before finalize().
+  explicit Bulk(const std::function<void(Model&)>& extra = {}) {
     Model& m = *model;
     const auto tensors = testing::scaled_pzt5h();
     m.add_unknown("v", std::make_shared<const FESpace>(mesh, 1, 2));
@@ -50,6 +54,7 @@ struct Bulk {
     traction = m.add_brick(std::make_shared<TractionBrick>(std::vector<double>{0.0, -1.0}, "top"));
     m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", "left")));
     m.add_brick(std::make_shared<DirichletBrick>(DirichletBrick::clamp("phi", "top")));
+    if (extra) extra(m);
     m.finalize();
   }
 
@@ -253,6 +258,66 @@ TEST(Model, AnAffineFieldFollowsEveryChangeOfWhatItReads) {
   expect_current("set_free_values");
   const Eigen::VectorXd* first = &m.values("u");
   EXPECT_EQ(&m.values("u"), first) << "an unchanged field is read where it is";
+}
+
+// The residual's derivative along the history (what the time estimate propagates its errors by) from the
+// linear bricks' blocks: the residual is affine in u_prev and v_prev (through u and the acceleration), so a
+// central difference of residuals with a step as large as the fields themselves is exact but for round-off.
+// Where the blocks cannot give it (a nonlinear brick reads u, or the constants changed since the blocks
+// were assembled), it says so and leaves its output alone.
+TEST(Model, TheResidualsDerivativeAlongTheHistoryIsTheDifferenceOfItsResiduals) {
+  Bulk bulk;
+  Model& m = *bulk.model;
+  bulk.scheme.begin_step(m, 0.01);
+  const int n = m.space("v").num_dofs();
+  m.set_values("v", Eigen::VectorXd::LinSpaced(n, -1.0, 2.0));
+  m.set_values("v_prev", Eigen::VectorXd::LinSpaced(n, 0.5, -0.5));
+  m.set_values("u_prev", Eigen::VectorXd::LinSpaced(n, 1e-3, 3e-3));
+  m.apply_dirichlet();
+  m.assemble(true);
+  const std::map<std::string, Eigen::VectorXd> direction{
+      {"u_prev", Eigen::VectorXd::LinSpaced(n, 0.0, 1.0).array().square().matrix()},
+      {"v_prev", Eigen::VectorXd::LinSpaced(n, 2.0, -1.0).array().sin().matrix()}};
+  Eigen::VectorXd derivative;
+  ASSERT_TRUE(m.residual_derivative(direction, derivative));
+
+  const auto residual_moved_by = [&](double t) {
+    for (const auto& [h, d] : direction) m.set_values(h, m.values(h) + t * d);
+    m.assemble(false);
+    const Eigen::VectorXd r = m.residual();
+    for (const auto& [h, d] : direction) m.set_values(h, m.values(h) - t * d);
+    return r;
+  };
+  const Eigen::VectorXd difference = (residual_moved_by(1.0) - residual_moved_by(-1.0)) / 2;
+  ASSERT_GT(difference.lpNorm<Eigen::Infinity>(), 1e-3 * m.residual().lpNorm<Eigen::Infinity>());
+  EXPECT_LT((derivative - difference).lpNorm<Eigen::Infinity>(), 1e-10 * difference.lpNorm<Eigen::Infinity>());
+  // Each history field on its own: the derivative is linear in the direction.
+  Eigen::VectorXd along_u, along_v;
+  ASSERT_TRUE(m.residual_derivative({{"u_prev", direction.at("u_prev")}}, along_u));
+  ASSERT_TRUE(m.residual_derivative({{"v_prev", direction.at("v_prev")}}, along_v));
+  EXPECT_GT(along_u.norm(), 0.0);
+  EXPECT_GT(along_v.norm(), 0.0);
+  EXPECT_LT((along_u + along_v - derivative).lpNorm<Eigen::Infinity>(), 1e-12 * derivative.lpNorm<Eigen::Infinity>());
+
+  Eigen::VectorXd untouched = Eigen::VectorXd::Constant(3, 7.0);
+  m.set_constant("rho", 3.0);  // the inertia's blocks are of rho = 2 until the next assembly
+  EXPECT_FALSE(m.residual_derivative(direction, untouched));
+  EXPECT_EQ(untouched, Eigen::VectorXd::Constant(3, 7.0));
+  m.assemble(false);
+  EXPECT_TRUE(m.residual_derivative(direction, untouched));
+  EXPECT_THAT([&] { (void)m.residual_derivative({{"u", direction.at("u_prev")}}, untouched); },
+              ::testing::ThrowsMessage<Error>(HasSubstr("along 'u', which is not a data field")));
+
+  // A normal compliance reads u = k v + u_prev, nonlinearly: its residual is no product of blocks.
+  Bulk compliant([](Model& model) {
+    model.set_constants(law_values(NormalCompliance{1e3, 1, 0}));
+    model.add_brick(std::make_shared<NormalResponseBrick<NormalCompliance>>("bottom"));
+  });
+  compliant.scheme.begin_step(*compliant.model, 0.01);
+  compliant.model->assemble(true);
+  EXPECT_FALSE(compliant.model->residual_derivative(direction, untouched));
+  EXPECT_TRUE(compliant.model->residual_derivative({{"v_prev", direction.at("v_prev")}}, untouched))
+      << "v_prev reaches only the inertia's acceleration, a linear brick's";
 }
 
 TEST(Model, RejectsBadInputNamingWhatIsWrong) {
