@@ -134,14 +134,8 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
   const int dim = geo.mesh().dim();
   const int nq = geo.num_points();
   const bool cells = geo.integration() == Integration::Cells;
-  // What one element needs while it is computed: a thread has one at a time.
-  struct Workspace {
-    ElementData data;
-    LocalSystem local;
-    std::vector<std::vector<int>> dofs;
-  };
-  auto make_workspace = [&] {
-    Workspace w;
+  // Sizes a workspace for this term (a kept one has the sizes already: the resizes do nothing).
+  auto prepare = [&](Workspace& w) {
     w.data.dim = dim;
     w.data.num_points = nq;
     w.data.time = time;
@@ -152,7 +146,6 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
     w.local.residual.resize(n_tests);
     w.local.tangent.resize(term.couplings().size());
     w.dofs.resize(n_fields);
-    return w;
   };
 
   // The element's local residual and tangent (no shared state is written).
@@ -235,8 +228,13 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
 
   const int n_elements = geo.num_elements();
   const int threads = n_elements >= kMinElementsForThreads ? assembly_threads() : 1;
+  if (tangent) ++tangent_assemblies_;
+  std::vector<Workspace> made;
+  std::vector<Workspace>& workspaces = tangent_assemblies_ >= 2 ? kept_workspaces_ : made;
+  workspaces.resize(threads == 1 ? 1 : std::min(kChunkElements, n_elements));
+  for (Workspace& w : workspaces) prepare(w);
   if (threads == 1) {
-    Workspace w = make_workspace();
+    Workspace& w = workspaces.front();
     for (int e = 0; e < n_elements; ++e) {
       compute(e, w);
       scatter(w);
@@ -244,8 +242,7 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
   } else {
     // Chunks of elements are computed in parallel, then added in element order: the sums are those of
     // the loop above, bit for bit. An exception leaves the parallel loop as the first failed element's.
-    std::vector<Workspace> chunk(std::min(kChunkElements, n_elements));
-    for (Workspace& w : chunk) w = make_workspace();
+    std::vector<Workspace>& chunk = workspaces;
     std::vector<std::exception_ptr> failures(chunk.size());
     for (int first = 0; first < n_elements; first += int(chunk.size())) {
       const int count = std::min(int(chunk.size()), n_elements - first);

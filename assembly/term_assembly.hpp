@@ -67,6 +67,20 @@ class TermAssembly {
   std::vector<std::vector<ShapeTable>> tables_;  // [field][local_face + 1]
   std::vector<CsrMatrix> blocks_;
   std::int64_t elements_assembled_ = 0;
+
+  // What one element needs while it is computed: a thread has one at a time, a loop on several threads
+  // one per element of a chunk.
+  struct Workspace {
+    ElementData data;
+    LocalSystem local;
+    std::vector<std::vector<int>> dofs;
+  };
+  // A term whose tangent is assembled again and again (a contact law's, at every Newton iteration) keeps
+  // its workspaces from its second tangent assembly on: made afresh at each call, a chunk's workspaces and
+  // their vectors were tens of thousands of allocations per assembly of a 3D contact face. A linear term,
+  // assembled once, keeps none (a chunk of them would outweigh its block).
+  std::vector<Workspace> kept_workspaces_;
+  int tangent_assemblies_ = 0;
 };
 
 }  // namespace pc
