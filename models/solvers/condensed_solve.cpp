@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
+#include "assembly/dense_inverse.hpp"
 #include "assembly/error.hpp"
 
 namespace pc {
@@ -80,16 +82,12 @@ void CondensedSolve::prepare(NonlinearProblem& problem, LinearSolveCost& cost) {
     schur_->factorize(A);
     cost.factorize_seconds += seconds_since(t);
     t = Clock::now();
-    const Eigen::MatrixXd& S = schur_->schur();
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(S);
-    const double smallest = lu.rcond() * S.cwiseAbs().colwise().sum().maxCoeff();
-    // Rows of S that vanish (a multiplier's, which only the nonlinear part fills) make it singular; the
-    // condition estimate is not always finite then, nor is the inverse: check both.
-    schur_regular_ = std::isfinite(smallest) && smallest > kMinSchurRelativeSize * largest_entry_in_rows(A, nonlinear_);
-    if (schur_regular_) {
-      schur_inverse_ = lu.inverse();
-      schur_regular_ = schur_inverse_.allFinite();
-    }
+    // Rows of S that vanish (a multiplier's, which only the nonlinear part fills) make it singular: its
+    // inverse is then not taken (inverse_if_regular checks the condition estimate and the inverse).
+    std::optional<Eigen::MatrixXd> inverse =
+        inverse_if_regular(schur_->schur(), kMinSchurRelativeSize * largest_entry_in_rows(A, nonlinear_));
+    schur_regular_ = inverse.has_value();
+    if (schur_regular_) schur_inverse_ = std::move(*inverse);
     woodbury_valid_ = false;
     cost.condensation_seconds += seconds_since(t);
   } else {
