@@ -10,13 +10,14 @@
 // Global error, two ways (TimeErrorPropagation):
 //  - Linearised (the default): the error is carried through every step by the step's own linearisation.
 //    The history (u_prev, v_prev, ...) is perturbed by the errors it carries and, apart, by the step's
-//    local errors; the response of the solution, J dx = -(dR/dh) P, is one residual difference and one
-//    solve with the tangent Newton has (NewtonSolver::solve_tangent) for each. What a damped mode forgets
+//    local errors; the response of the solution, J dx = -(dR/dh) P, is one derivative of the residual and
+//    one solve with the tangent Newton has (NewtonSolver::solve_tangent) for each. The derivative is the
+//    linear bricks' blocks times P (Model::residual_derivative: exact, no element loop) or, where a brick
+//    that is not linear reads the history (a normal compliance reads u), a difference of residuals. What a damped mode forgets
 //    is forgotten, stiff modes (a contact damper's, a fast viscous one's) are filtered out of the local
 //    error as in Shampine's filtered estimates, and the algebraic fields (the potential, the velocity of a
-//    model without inertia) get their induced error. Cost per step: one residual difference and one solve
-//    (two of each with the filtered local error adaptive steps need), and one assembly to restore the
-//    converged residual.
+//    model without inertia) get their induced error. Cost per step: one derivative and one solve
+//    (two of each with the filtered local error adaptive steps need).
 //  - Summed: the local errors added up, as vectors, for the integrated fields only: no solve, but an
 //    overestimate where the dynamics damp the error (many times over on a stiff contact scene) and
 //    nothing for the algebraic fields.

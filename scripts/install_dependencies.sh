@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   g++ cmake ninja-build pkg-config
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libgmsh-dev nlohmann-json3-dev zlib1g-dev libmetis-dev libspectra-dev
-  libopenblas0-serial
+  libopenblas0-serial liblapack-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
 )
