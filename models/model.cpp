@@ -48,6 +48,7 @@ struct Model::BrickState {
   double r0_time = 0;
   std::map<std::string, std::uint64_t> r0_data_versions;
   std::map<std::string, Eigen::VectorXd> r0;  // per test unknown
+  std::map<std::string, bool> r0_zero;        // per test unknown: every entry of r0 is zero
 };
 
 struct Model::System {
@@ -928,13 +929,27 @@ void Model::assemble(bool tangent) {
         for (const std::string& name : bt.uncoupled_data) state.r0_data_versions[name] = field(name).version;
       }
       agree_on_failure(brick);
-      for (auto& [u, r0] : state.r0) processes::sum({r0.data(), size_t(r0.size())});
+      state.r0_zero.clear();
+      for (auto& [u, r0] : state.r0) {
+        processes::sum({r0.data(), size_t(r0.size())});
+        state.r0_zero[u] = (r0.array() == 0.0).all();
+      }
       state.r0_valid = true;
       state.r0_time = time_;
     }
     // The pieces K_k x_k and R0 are measured one by one: they may cancel within the brick (k_e phi
-    // against k_e phi_f), and round-off is relative to each of them.
+    // against k_e phi_f), and round-off is relative to each of them. A brick's share of an unknown that is
+    // a single product (R0 zero, no other coupling, the brick not kept) is added straight into the field's
+    // residual, measured by the product itself: the same bits as its sum through the brick's zeroed
+    // vector, without that vector's three passes (most bricks' shares are one product).
+    const bool kept = kept_residuals_.count(b) > 0;
+    std::map<std::string, int> pieces;
+    for (const auto& [u, r0] : state.r0)
+      if (kept || !state.r0_zero.at(u)) ++pieces[u];
+    for (const BoundTerm& bt : state.terms)
+      for (size_t k = 0; k < bt.trial_fields.size(); ++k) ++pieces[bt.field_names[bt.assembly->term().couplings()[k].test]];
     for (const auto& [u, r0] : state.r0) {
+      if (!kept && state.r0_zero.at(u)) continue;
       measure(u, r0, 0);
       brick_residual.at(u) += r0;
       touched.insert(u);
@@ -943,8 +958,9 @@ void Model::assemble(bool tangent) {
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
         const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
         const CsrMatrix& K = bt.assembly->block(int(k));
-        add_measured_product(u, K, this->values(bt.trial_fields[k]), brick_residual.at(u));
-        touched.insert(u);
+        const bool alone = !kept && pieces.at(u) == 1;
+        add_measured_product(u, K, this->values(bt.trial_fields[k]), alone ? field_residuals_.at(u) : brick_residual.at(u));
+        if (!alone) touched.insert(u);
       }
     for (const std::string& u : touched) measure_and_add(u, b);
   }
