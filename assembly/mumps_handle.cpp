@@ -122,12 +122,15 @@ void MumpsHandle::set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scal
     // of slots (an int per entry, for the whole run).
     require(a.rows() == mumps_.n && a.isCompressed(), "MUMPS (", owner_, "): values of another pattern");
     scaled_values_.resize(rows_.size());
-    size_t entry = 0;
+    size_t entry = 0;  // counts every lower entry, so that one too many is refused below, not dropped
     for (int row = 0; row < a.rows(); ++row)
       for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
-        if (a.innerIndexPtr()[slot] <= row && entry < scaled_values_.size())
-          scaled_values_[entry++] = row_scale[row] * a.valuePtr()[slot];
-    require(entry == scaled_values_.size(), "MUMPS (", owner_, "): values of another pattern");
+        if (a.innerIndexPtr()[slot] <= row) {
+          if (entry < scaled_values_.size()) scaled_values_[entry] = row_scale[row] * a.valuePtr()[slot];
+          ++entry;
+        }
+    require(entry == scaled_values_.size(), "MUMPS (", owner_, "): values of another pattern (", entry,
+            " entries in the lower triangle, the pattern has ", scaled_values_.size(), ")");
     values = scaled_values_.data();
   }
   (distributed() ? mumps_.a_loc : mumps_.a) = values;

@@ -99,9 +99,9 @@ class TimeErrorEstimator {
   // A history that starts at the model's current time and values (the initial state, taken as exact).
   TimeErrorHistory start(const Model& model) const;
   // The estimate for the step just solved (the model at t_n, before the scheme's end_step), whose error
-  // term is `term`. The history is not changed, so that a rejected step leaves no trace; linearised, the
-  // model is perturbed and restored (its residual reassembled at the converged state) and `solve` is
-  // required.
+  // term is `term`. The history is not changed, so that a rejected step leaves no trace; linearised,
+  // `solve` is required, and where the derivative needs a difference of residuals the model is perturbed
+  // and restored (its converged residual put back as it was).
   TimeErrorStep evaluate(Model& model, LocalErrorTerm term, const TimeErrorHistory& history,
                          const TangentSolve* solve) const;
   // Takes the step into the history.
