@@ -27,6 +27,28 @@ void order_on_one_scotch_thread() {
   std::call_once(once, [] { setenv("SCOTCH_PTHREAD_NUMBER", "1", /*overwrite=*/0); });
 }
 
+// One entry's coordinates mixed into a pattern's fingerprint (a 64-bit multiply-xorshift: a change of any
+// index changes the fingerprint but for chance, about 2^-64).
+std::uint64_t mix_entry(std::uint64_t hash, int row, int col) {
+  hash ^= (std::uint64_t(std::uint32_t(row)) << 32) | std::uint32_t(col);
+  hash *= 0x9E3779B97F4A7C15ull;
+  return hash ^ (hash >> 29);
+}
+
+// The fingerprint of the coordinates MUMPS is given for `a` (all, or the lower triangle), and their count.
+std::uint64_t pattern_fingerprint(const CsrMatrix& a, bool lower, std::size_t& entries) {
+  std::uint64_t hash = mix_entry(0, int(a.rows()), int(a.cols()));
+  entries = 0;
+  for (int row = 0; row < a.rows(); ++row)
+    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
+      const int col = a.innerIndexPtr()[slot];
+      if (lower && col > row) continue;
+      hash = mix_entry(hash, row, col);
+      ++entries;
+    }
+  return hash;
+}
+
 }  // namespace
 
 MumpsHandle::MumpsHandle(const char* owner, Scope scope) : owner_(owner), scope_(scope) {
@@ -59,68 +81,83 @@ void MumpsHandle::stop() {
 
 // CSR order is a valid coordinate order, so the values array of the same matrix serves MUMPS as is in
 // General mode.
+void MumpsHandle::fill_coordinates(const CsrMatrix& a) {
+  const bool lower = symmetry() == Symmetric;
+  // Exactly as many entries as MUMPS is given (no capacity to spare).
+  std::size_t count = 0;
+  for (int row = 0; row < a.rows(); ++row)
+    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
+      count += !lower || a.innerIndexPtr()[slot] <= row;
+  std::vector<MUMPS_INT>().swap(rows_);
+  std::vector<MUMPS_INT>().swap(cols_);
+  rows_.reserve(count);
+  cols_.reserve(count);
+  for (int row = 0; row < a.rows(); ++row)
+    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
+      const int col = a.innerIndexPtr()[slot];
+      if (lower && col > row) continue;
+      rows_.push_back(row + 1);
+      cols_.push_back(col + 1);
+    }
+  coordinates_held_ = true;
+  point_at_coordinates();
+}
+
+void MumpsHandle::point_at_coordinates() {
+  MUMPS_INT* rows = rows_.empty() ? nullptr : rows_.data();
+  MUMPS_INT* cols = cols_.empty() ? nullptr : cols_.data();
+  if (distributed()) {
+    mumps_.nnz_loc = static_cast<std::int64_t>(rows_.size());
+    mumps_.irn_loc = rows;
+    mumps_.jcn_loc = cols;
+  } else {
+    mumps_.nnz = static_cast<std::int64_t>(rows_.size());
+    mumps_.irn = rows;
+    mumps_.jcn = cols;
+  }
+}
+
 void MumpsHandle::set_pattern(const CsrMatrix& a, Symmetry symmetry) {
   if (symmetry != this->symmetry()) {
     stop();
     start(symmetry);
   }
   release_values();
-  // Exactly as many entries as MUMPS is given (no capacity to spare: these are kept with the factors).
-  long entries = a.nonZeros();
-  if (symmetry == Symmetric)
-    for (int row = 0; row < a.rows(); ++row)
-      for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
-        entries -= a.innerIndexPtr()[slot] > row;
-  rows_.clear();
-  cols_.clear();
-  rows_.shrink_to_fit();
-  cols_.shrink_to_fit();
-  rows_.reserve(entries);
-  cols_.reserve(entries);
-  for (int row = 0; row < a.rows(); ++row)
-    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
-      const int col = a.innerIndexPtr()[slot];
-      if (symmetry == Symmetric && col > row) continue;
-      rows_.push_back(row + 1);
-      cols_.push_back(col + 1);
-    }
   mumps_.n = static_cast<MUMPS_INT>(a.rows());
-  if (distributed()) {
-    mumps_.nnz_loc = static_cast<std::int64_t>(rows_.size());
-    mumps_.irn_loc = rows_.data();
-    mumps_.jcn_loc = cols_.data();
-  } else {
-    mumps_.nnz = static_cast<std::int64_t>(rows_.size());
-    mumps_.irn = rows_.data();
-    mumps_.jcn = cols_.data();
-  }
+  pattern_fingerprint_ = pattern_fingerprint(a, symmetry == Symmetric, pattern_entries_);
+  fill_coordinates(a);
   // No values (released above): the analysis depends on the pattern only.
 }
 
 // For Symmetric, the lower triangle must match and every entry above have its mirror below.
 bool MumpsHandle::has_pattern(const CsrMatrix& a) const {
   if (!a.isCompressed() || a.rows() != a.cols() || a.rows() != mumps_.n) return false;
-  size_t entry = 0;
-  for (int row = 0; row < a.rows(); ++row)
-    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
-      const int col = a.innerIndexPtr()[slot];
-      if (symmetry() == Symmetric && col > row) {
-        if (find_slot(a, col, row) < 0) return false;
-        continue;
+  if (symmetry() == Symmetric)
+    for (int row = 0; row < a.rows(); ++row)
+      for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
+        const int col = a.innerIndexPtr()[slot];
+        if (col > row && find_slot(a, col, row) < 0) return false;
       }
-      if (entry == rows_.size() || rows_[entry] != row + 1 || cols_[entry] != col + 1) return false;
-      ++entry;
-    }
-  return entry == rows_.size();
+  std::size_t entries = 0;
+  const std::uint64_t fingerprint = pattern_fingerprint(a, symmetry() == Symmetric, entries);
+  return entries == pattern_entries_ && fingerprint == pattern_fingerprint_;
 }
 
 void MumpsHandle::set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scale) {
+  require(a.rows() == mumps_.n && a.isCompressed(), "MUMPS (", owner_, "): values of another pattern");
+  if (!coordinates_held_) {
+    std::size_t entries = 0;
+    const std::uint64_t fingerprint = pattern_fingerprint(a, symmetry() == Symmetric, entries);
+    require(entries == pattern_entries_ && fingerprint == pattern_fingerprint_, "MUMPS (", owner_,
+            "): values of another pattern (", entries, " entries given, the analysed pattern has ",
+            pattern_entries_, ")");
+    fill_coordinates(a);
+  }
   // MUMPS only reads the values; its C interface is not const-correct.
   double* values = const_cast<double*>(a.valuePtr());
   if (symmetry() == Symmetric) {
     // The lower triangle in set_pattern's order, found again from the pattern rather than kept as a list
     // of slots (an int per entry, for the whole run).
-    require(a.rows() == mumps_.n && a.isCompressed(), "MUMPS (", owner_, "): values of another pattern");
     scaled_values_.resize(rows_.size());
     size_t entry = 0;  // counts every lower entry, so that one too many is refused below, not dropped
     for (int row = 0; row < a.rows(); ++row)
@@ -132,6 +169,9 @@ void MumpsHandle::set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scal
     require(entry == scaled_values_.size(), "MUMPS (", owner_, "): values of another pattern (", entry,
             " entries in the lower triangle, the pattern has ", scaled_values_.size(), ")");
     values = scaled_values_.data();
+  } else {
+    require(std::size_t(a.nonZeros()) == rows_.size(), "MUMPS (", owner_, "): values of another pattern (",
+            a.nonZeros(), " entries, the pattern has ", rows_.size(), ")");
   }
   (distributed() ? mumps_.a_loc : mumps_.a) = values;
 }
@@ -140,6 +180,10 @@ void MumpsHandle::release_values() {
   mumps_.a = nullptr;
   mumps_.a_loc = nullptr;
   std::vector<double>().swap(scaled_values_);
+  std::vector<MUMPS_INT>().swap(rows_);
+  std::vector<MUMPS_INT>().swap(cols_);
+  coordinates_held_ = false;
+  point_at_coordinates();
 }
 
 void MumpsHandle::run(Job job, const char* phase) {

@@ -7,6 +7,8 @@
 // every process (assembly/processes.hpp): each gives its share of the matrix, entries that the processes
 // sum (MUMPS's distributed assembled input, ICNTL(18) = 3), and the right-hand side and the solution are
 // whole on the host, rank 0.
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -44,9 +46,13 @@ class MumpsHandle {
   // Whether `a` has the pattern last given to set_pattern (so that a caller need keep no copy to compare).
   bool has_pattern(const CsrMatrix& a) const;
   // Points MUMPS at the values of `a` (same pattern as set_pattern's): `a`'s own array in General mode;
-  // for Symmetric, the lower triangle of diag(row_scale) a, copied here until release_values().
+  // for Symmetric, the lower triangle of diag(row_scale) a, copied here until release_values(). The
+  // coordinates are made again from `a` if release_values() dropped them.
   void set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scale);
-  // Forgets the values (a factorisation reads them; the solves need only the factors).
+  // Forgets the values and the coordinates (an analysis or a factorisation reads them; the solves need
+  // only the factors). Kept with the factors for the whole run, the coordinates were an int pair per
+  // entry: 5 MB at the paper's 240 x 80, at the run's peak of memory. What stays is the pattern's
+  // fingerprint, which has_pattern and set_values compare.
   void release_values();
   // Runs a job; throws pc::Error naming the owner and the phase on failure (numerically singular
   // matrices get their own message).
@@ -55,11 +61,18 @@ class MumpsHandle {
  private:
   void start(Symmetry symmetry);
   void stop();
+  // Fills rows_ and cols_ with the coordinates MUMPS is given for `a` (all, or the lower triangle), and
+  // points MUMPS at them.
+  void fill_coordinates(const CsrMatrix& a);
+  void point_at_coordinates();
 
   const char* owner_;
   Scope scope_;
   DMUMPS_STRUC_C mumps_{};
-  std::vector<MUMPS_INT> rows_, cols_;
+  std::vector<MUMPS_INT> rows_, cols_;  // empty between release_values() and set_values()
+  bool coordinates_held_ = false;
+  std::size_t pattern_entries_ = 0;
+  std::uint64_t pattern_fingerprint_ = 0;
   std::vector<double> scaled_values_;
 };
 
