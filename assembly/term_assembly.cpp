@@ -39,8 +39,11 @@ TermAssembly::TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<con
 
 TermAssembly::TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<const RegionGeometry> geometry,
                            std::vector<const FESpace*> spaces, TermAssemblyCache* cache)
-    : term_(std::move(term)), geometry_(std::move(geometry)), spaces_(std::move(spaces)) {
+    : term_(std::move(term)), geometry_(std::move(geometry)), cache_(cache), spaces_(std::move(spaces)) {
   const Term& t = *term_;
+  require(geometry_ != nullptr, "term '", t.name(), "': no region geometry");
+  region_ = geometry_->region();
+  degree_ = geometry_->degree();
   require(spaces_.size() == t.fields().size(), "term '", t.name(), "' names ", t.fields().size(),
           " fields but was given ", spaces_.size(), " spaces");
   for (const FESpace* s : spaces_) require(s != nullptr, "term '", t.name(), "': a field has no space");
@@ -89,13 +92,24 @@ TermAssembly::TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<con
   build_blocks(cache);
 }
 
+const RegionGeometry& TermAssembly::geometry() const {
+  if (!geometry_) geometry_ = cache_->geometry(region_, degree_);
+  return *geometry_;
+}
+
+void TermAssembly::release_geometry() {
+  if (!cache_ || released_) return;
+  geometry_.reset();
+  released_ = true;
+}
+
 const TermAssembly::ShapeTable& TermAssembly::table(int field, int local_face) const {
   return tables_[field][local_face + 1];
 }
 
 // The dofs in the order of the block patterns' elements (assembly/block_pattern.hpp), whose function it is.
 void TermAssembly::element_dofs(int field, int element, std::vector<int>& dofs) const {
-  pc::element_dofs(*spaces_[field], *geometry_, element, dofs);
+  pc::element_dofs(*spaces_[field], geometry(), element, dofs);
 }
 
 void TermAssembly::build_blocks(TermAssemblyCache* cache) {
@@ -130,7 +144,7 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
     for (CsrMatrix& b : blocks_) std::fill(b.valuePtr(), b.valuePtr() + b.nonZeros(), 0.0);
   if (!want_residual && !tangent) return;
 
-  const RegionGeometry& geo = *geometry_;
+  const RegionGeometry& geo = geometry();
   const int dim = geo.mesh().dim();
   const int nq = geo.num_points();
   const bool cells = geo.integration() == Integration::Cells;

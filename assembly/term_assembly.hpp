@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -36,7 +37,13 @@ class TermAssembly {
                TermAssemblyCache& cache);
 
   const Term& term() const { return *term_; }
-  const RegionGeometry& geometry() const { return *geometry_; }
+  // The geometry, made again from the cache if release_geometry() let it go.
+  const RegionGeometry& geometry() const;
+  // Lets go of the geometry, for a term whose blocks stay as assembled (a linear term's): the body's
+  // geometries were 7.6 MB at the paper's 240 x 80, kept for the whole run to serve one assembly. If the
+  // term is assembled again (its data changed), its geometry is made again from the cache, the same bits,
+  // and kept from then on. Nothing happens to a term built without a cache, or that released it before.
+  void release_geometry();
   const FESpace& space(int field) const { return *spaces_[field]; }
   // Tangent block of coupling k, with the values of the last assembly that asked for tangents.
   const CsrMatrix& block(int k) const { return blocks_[k]; }
@@ -62,7 +69,11 @@ class TermAssembly {
   void build_blocks(TermAssemblyCache* cache);
 
   std::shared_ptr<const Term> term_;
-  std::shared_ptr<const RegionGeometry> geometry_;
+  mutable std::shared_ptr<const RegionGeometry> geometry_;  // null after release_geometry()
+  TermAssemblyCache* cache_ = nullptr;                      // where a released geometry is made again
+  std::string region_;
+  int degree_ = 0;
+  bool released_ = false;
   std::vector<const FESpace*> spaces_;
   std::vector<std::vector<ShapeTable>> tables_;  // [field][local_face + 1]
   std::vector<CsrMatrix> blocks_;

@@ -12,9 +12,13 @@ void TermAssemblyCache::set_owned_cells(std::vector<char> owned) {
 }
 
 std::shared_ptr<const RegionGeometry> TermAssemblyCache::geometry(const std::string& region, int degree) {
-  auto& slot = geometries_[{region, degree}];
-  if (!slot) slot = std::make_shared<const RegionGeometry>(mesh_, region, degree, owned_cells_);
-  return slot;
+  std::weak_ptr<const RegionGeometry>& slot = geometries_[{region, degree}];
+  std::shared_ptr<const RegionGeometry> held = slot.lock();
+  if (!held) {
+    held = std::make_shared<const RegionGeometry>(mesh_, region, degree, owned_cells_);
+    slot = held;
+  }
+  return held;
 }
 
 std::shared_ptr<const BlockPattern> TermAssemblyCache::pattern(const std::shared_ptr<const RegionGeometry>& geometry,

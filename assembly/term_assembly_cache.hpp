@@ -3,7 +3,8 @@
 // inertia, piezoelectric coupling, permittivity -- all integrate over the body): the geometry of a region at
 // a quadrature degree, and the pattern of a block between two spaces over it. Without it each term kept
 // (and computed) its own copies, the largest part of a model's memory before its factorisation.
-// Entries live as long as the cache; geometries and spaces are told apart by identity.
+// Patterns live until forget_patterns(), geometries as long as a term holds them; geometries and spaces
+// are told apart by identity.
 #include <map>
 #include <memory>
 #include <string>
@@ -38,7 +39,9 @@ class TermAssemblyCache {
  private:
   const Mesh& mesh_;
   std::vector<char> owned_cells_;
-  std::map<std::pair<std::string, int>, std::shared_ptr<const RegionGeometry>> geometries_;
+  // Held by the terms, not here: a geometry no term holds any more (linear terms release theirs once
+  // assembled, TermAssembly::release_geometry) is freed, and made again if asked for.
+  std::map<std::pair<std::string, int>, std::weak_ptr<const RegionGeometry>> geometries_;
   std::map<std::tuple<const RegionGeometry*, const FESpace*, const FESpace*>, std::shared_ptr<const BlockPattern>>
       patterns_;
   std::map<const RegionGeometry*, std::shared_ptr<const RegionGeometry>> pattern_geometries_;  // kept alive: keys

@@ -937,6 +937,9 @@ void Model::assemble(bool tangent) {
       state.r0_valid = true;
       state.r0_time = time_;
     }
+    // Its blocks and R0 stand: the geometry is not needed until the brick's data change (then the term
+    // makes it again, and keeps it).
+    for (BoundTerm& bt : state.terms) bt.assembly->release_geometry();
     // The pieces K_k x_k and R0 are measured one by one: they may cancel within the brick (k_e phi
     // against k_e phi_f), and round-off is relative to each of them. A brick's share of an unknown that is
     // a single product (R0 zero, no other coupling, the brick not kept) is added straight into the field's
