@@ -47,11 +47,13 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(mesh) {
     counts_[d] = bucket_edge > 0 ? std::max(1, int(std::lround(extent / bucket_edge))) : 1;
     cell_size_[d] = extent > 0 ? extent / counts_[d] : 1;
   }
-  buckets_.resize(size_t(counts_[0]) * counts_[1] * counts_[2]);
-
   // A first-order cell lies in the convex hull of its vertices, hence in their bounding box; the box is
   // widened by the tolerance so that a point found by inside_reference is always in a candidate bucket.
-  for (int c = 0; c < mesh.num_cells(); ++c) {
+  // Two passes over the cells, counting and then filling, so that the buckets are one array (a vector per
+  // bucket was a small allocation per cell, and its malloc header, at the run's peak of memory).
+  const size_t num_buckets = size_t(counts_[0]) * counts_[1] * counts_[2];
+  bucket_start_.assign(num_buckets + 1, 0);
+  auto for_each_bucket_of = [&](int c, auto&& visit) {
     std::array<int, 3> first{0, 0, 0}, last{0, 0, 0};
     for (int d = 0; d < dim; ++d) {
       double low = mesh.node(mesh.cell(c)[0])[d], high = low;
@@ -64,9 +66,13 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(mesh) {
     }
     for (int k = first[2]; k <= last[2]; ++k)
       for (int j = first[1]; j <= last[1]; ++j)
-        for (int i = first[0]; i <= last[0]; ++i)
-          buckets_[(size_t(k) * counts_[1] + j) * counts_[0] + i].push_back(c);
-  }
+        for (int i = first[0]; i <= last[0]; ++i) visit((size_t(k) * counts_[1] + j) * counts_[0] + i);
+  };
+  for (int c = 0; c < mesh.num_cells(); ++c) for_each_bucket_of(c, [&](size_t bucket) { ++bucket_start_[bucket + 1]; });
+  for (size_t b = 0; b < num_buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
+  bucket_cells_.resize(bucket_start_.back());
+  std::vector<int> next(bucket_start_.begin(), bucket_start_.end() - 1);
+  for (int c = 0; c < mesh.num_cells(); ++c) for_each_bucket_of(c, [&](size_t bucket) { bucket_cells_[next[bucket]++] = c; });
 }
 
 std::optional<LocatedPoint> PointLocator::locate(const double* x) const {
@@ -83,7 +89,9 @@ std::optional<LocatedPoint> PointLocator::locate(const double* x,
     if (!(x[d] >= lower_[d] - tolerance_ && x[d] <= upper + tolerance_)) return std::nullopt;
     index[d] = std::clamp(int(std::floor((x[d] - lower_[d]) / cell_size_[d])), 0, counts_[d] - 1);
   }
-  for (int c : buckets_[(size_t(index[2]) * counts_[1] + index[1]) * counts_[0] + index[0]]) {
+  const size_t bucket = (size_t(index[2]) * counts_[1] + index[1]) * counts_[0] + index[0];
+  for (int k = bucket_start_[bucket]; k < bucket_start_[bucket + 1]; ++k) {
+    const int c = bucket_cells_[k];
     if (!accept(c)) continue;
     LocatedPoint hit{c, {0, 0, 0}};
     if (map_to_reference(mesh_, c, x, hit.xi.data()) &&

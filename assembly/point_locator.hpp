@@ -33,7 +33,8 @@ class PointLocator {
   const Mesh& mesh_;
   std::array<double, 3> lower_{}, cell_size_{};
   std::array<int, 3> counts_{1, 1, 1};
-  std::vector<std::vector<int>> buckets_;
+  // The cells of bucket b: bucket_cells_[bucket_start_[b] .. bucket_start_[b + 1]), in increasing order.
+  std::vector<int> bucket_start_, bucket_cells_;
   double tolerance_ = 0;
 };
 
