@@ -197,24 +197,38 @@ SpaceErrorEstimator::SpaceErrorEstimator(const FESpace& space) : space_(space) {
   }
 }
 
-std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const Eigen::VectorXd& f) const {
-  if (space_.order() != 1) return averaged_nodal_gradients(space_, f);
-  const Mesh& mesh = space_.mesh();
-  const int dim = mesh.dim(), components = space_.num_components(), width = components * dim;
-  const int n = space_.num_scalar_dofs(), nloc = space_.element().num_dofs();
+bool SpaceErrorEstimator::serves(const FESpace& other) const {
+  if (&other == &space_) return true;
+  if (&other.mesh() != &space_.mesh() || &other.element() != &space_.element() ||
+      other.num_scalar_dofs() != space_.num_scalar_dofs())
+    return false;
+  for (int cell = 0; cell < space_.mesh().num_cells(); ++cell) {
+    if (other.has_cell(cell) != space_.has_cell(cell)) return false;
+    if (!space_.has_cell(cell)) continue;
+    const auto mine = space_.cell_scalar_dofs(cell), theirs = other.cell_scalar_dofs(cell);
+    if (!std::equal(mine.begin(), mine.end(), theirs.begin(), theirs.end())) return false;
+  }
+  return true;
+}
+
+std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const FESpace& space, const Eigen::VectorXd& f) const {
+  if (space.order() != 1) return averaged_nodal_gradients(space, f);
+  const Mesh& mesh = space.mesh();
+  const int dim = mesh.dim(), components = space.num_components(), width = components * dim;
+  const int n = space.num_scalar_dofs(), nloc = space.element().num_dofs();
   // The gradient of f in a cell at a point whose shape gradients are dN (nloc x dim).
   const auto cell_gradient = [&](int cell, const double* dN, double* out) {
-    const auto dofs = space_.cell_scalar_dofs(cell);
+    const auto dofs = space.cell_scalar_dofs(cell);
     std::fill(out, out + width, 0.0);
     for (int i = 0; i < nloc; ++i)
       for (int c = 0; c < components; ++c) {
-        const double value = f[space_.dof(dofs[i], c)];
+        const double value = f[space.dof(dofs[i], c)];
         for (int d = 0; d < dim; ++d) out[c * dim + d] += value * dN[i * dim + d];
       }
   };
   std::vector<double> centre_gradient(size_t(mesh.num_cells()) * width, 0.0);
   for (int cell = 0; cell < mesh.num_cells(); ++cell)
-    if (space_.has_cell(cell))
+    if (space.has_cell(cell))
       cell_gradient(cell, centre_shape_gradients_.data() + size_t(cell) * nloc * dim,
                     centre_gradient.data() + size_t(cell) * width);
   std::vector<double> recovered(size_t(n) * width, 0.0);
@@ -232,9 +246,9 @@ std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const Eigen::
     double* out = recovered.data() + size_t(node) * width;
     double total = 0;
     for (int cell : averaged_cells_[k]) {
-      const auto dofs = space_.cell_scalar_dofs(cell);
+      const auto dofs = space.cell_scalar_dofs(cell);
       const int local = int(std::find(dofs.begin(), dofs.end(), node) - dofs.begin());
-      space_.shape_gradients_in_cell(cell, space_.element().dof_point(local).data(), dN.data());
+      space.shape_gradients_in_cell(cell, space.element().dof_point(local).data(), dN.data());
       cell_gradient(cell, dN.data(), gradient.data());
       const double measure = mesh.cell_measure(cell);
       for (int a = 0; a < width; ++a) out[a] += measure * gradient[a];
@@ -248,12 +262,19 @@ std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const Eigen::
 
 SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const Eigen::VectorXd& coefficients,
                                               GradientMeasure measure, const Eigen::MatrixXd& weight) const {
-  const FESpace& space = space_;
+  return estimate(field, space_, coefficients, measure, weight);
+}
+
+SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const FESpace& space,
+                                              const Eigen::VectorXd& coefficients, GradientMeasure measure,
+                                              const Eigen::MatrixXd& weight) const {
+  require(serves(space), "space error estimate of '", field,
+          "': the field's space has other cells or scalar dofs than the estimator's");
   const Mesh& mesh = space.mesh();
   const int dim = mesh.dim(), components = space.num_components();
   const int measured_width = check_measure("space error estimate of '" + field + "'", space, coefficients, measure, weight);
   const int width = components * dim;
-  const std::vector<double> nodal = recovered_nodal_gradients(coefficients);
+  const std::vector<double> nodal = recovered_nodal_gradients(space, coefficients);
   const ReferenceElement& element = space.element();
   // Degree 2p: the squared difference of two gradients of the space's degree p - 1 (p on a Q cell's
   // coordinates) is integrated exactly on simplices, well enough elsewhere.

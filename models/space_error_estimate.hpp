@@ -50,13 +50,20 @@ class SpaceErrorEstimator {
  public:
   explicit SpaceErrorEstimator(const FESpace& space);
   const FESpace& space() const { return space_; }
+  // Whether the estimator serves fields of `other` too: the same mesh, element and cells, and the same
+  // scalar dofs in each (e.g. a vector field's space and a scalar one's built alike). What it keeps
+  // depends on that scalar structure only, so a velocity and a potential share one.
+  bool serves(const FESpace& other) const;
   // The estimate of one field on the space. Throws if W is not the size the measure needs, if the measure
   // is Strain and the field has not dim components, or if the coefficients do not fit the space.
   SpaceErrorField estimate(const std::string& field, const Eigen::VectorXd& coefficients, GradientMeasure measure,
                            const Eigen::MatrixXd& weight) const;
+  // The same, of a field on another space that the estimator serves (throws if it does not).
+  SpaceErrorField estimate(const std::string& field, const FESpace& field_space, const Eigen::VectorXd& coefficients,
+                           GradientMeasure measure, const Eigen::MatrixXd& weight) const;
 
  private:
-  std::vector<double> recovered_nodal_gradients(const Eigen::VectorXd& coefficients) const;
+  std::vector<double> recovered_nodal_gradients(const FESpace& space, const Eigen::VectorXd& coefficients) const;
   const FESpace& space_;
   // First order: node i's recovered gradient is sum_k weight_[k] * (centre gradient of cell_[k]) over
   // k in [start_[i], start_[i + 1]); nodes with no fit near them (start_[i] == start_[i + 1]) take the

@@ -7,9 +7,11 @@ SpaceErrorEstimate PiezoSpaceErrorEstimator::operator()(const Model& model) {
   const auto add = [&](const std::string& field, const char* constant, GradientMeasure measure) {
     if (!model.has_field(field) || !model.has_constant(constant)) return;
     const FESpace& space = model.space(field);
-    std::unique_ptr<SpaceErrorEstimator>& estimator = estimators_[&space];
-    if (!estimator) estimator = std::make_unique<SpaceErrorEstimator>(space);
-    estimate.fields.push_back(estimator->estimate(field, model.values(field), measure, model.constant(constant)));
+    const SpaceErrorEstimator*& estimator = serving_[&space];
+    for (const auto& candidate : estimators_)
+      if (!estimator && candidate->serves(space)) estimator = candidate.get();
+    if (!estimator) estimator = estimators_.emplace_back(std::make_unique<SpaceErrorEstimator>(space)).get();
+    estimate.fields.push_back(estimator->estimate(field, space, model.values(field), measure, model.constant(constant)));
   };
   add(names_.displacement, "B", GradientMeasure::Strain);
   add(names_.velocity, "A", GradientMeasure::Strain);

@@ -87,6 +87,28 @@ TEST(RecoveryEstimate, AKeptEstimatorGivesWhatAFreshOneGives) {
   EXPECT_EQ(second.cells, fresh.cells);
 }
 
+// One estimator serves every space of its scalar structure: a potential estimated on the velocity's
+// estimator gives what its own estimator gives, to the bit. A space of another order or on other cells is
+// not served, and an estimate of its field is refused rather than computed on the wrong patches.
+TEST(RecoveryEstimate, AnEstimatorServesTheSpacesOfItsScalarStructure) {
+  const auto mesh = distorted_square(4);
+  const PiezoMmsExact exact;
+  const FESpace vector_space(mesh, 1, 2), scalar_space(mesh, 1, 1), quadratic(mesh, 2, 1);
+  const Eigen::VectorXd phi = scalar_space.interpolate([](const double* x, double* out) { out[0] = std::sin(3 * x[0]) * x[1]; });
+  const SpaceErrorEstimator shared(vector_space), own(scalar_space);
+  EXPECT_TRUE(shared.serves(scalar_space));
+  EXPECT_FALSE(shared.serves(quadratic));
+  const SpaceErrorField a = shared.estimate("phi", scalar_space, phi, GradientMeasure::Gradient, exact.m.beta);
+  const SpaceErrorField b = own.estimate("phi", phi, GradientMeasure::Gradient, exact.m.beta);
+  EXPECT_GT(a.relative(), 1e-3);
+  EXPECT_EQ(a.estimate, b.estimate);
+  EXPECT_EQ(a.cells, b.cells);
+  const Eigen::VectorXd psi = Eigen::VectorXd::Ones(quadratic.num_dofs());
+  testing::expect_error_containing(
+      [&] { shared.estimate("psi", quadratic, psi, GradientMeasure::Gradient, exact.m.beta); },
+      {"'psi'", "other cells or scalar dofs"});
+}
+
 // The same in 3D, on tetrahedra and hexahedra: the patch fits have four coefficients, faces three or four
 // vertices.
 TEST(RecoveryEstimate, VanishesForAFieldTheSpaceHoldsExactlyIn3D) {
