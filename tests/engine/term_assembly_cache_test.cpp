@@ -89,6 +89,34 @@ TEST_F(TermAssemblyCacheTest, SharedAndOwnCopiesAssembleTheSameBits) {
   }
 }
 
+// A term that releases its geometry (a linear term, once assembled) lets the cache free it when no other
+// term holds it; assembled again, it makes the geometry again from the cache and gives the same bits.
+TEST_F(TermAssemblyCacheTest, AReleasedGeometryIsFreedAndMadeAgainTheSame) {
+  TermAssemblyCache cache(*mesh);
+  TermAssembly diffusion(term(Integration::Cells, Diffusion{1.5}), "all", {&space}, cache);
+  TermAssembly reaction(term(Integration::Cells, Reaction{0.5}), "all", {&space}, cache);
+  const auto first = assembled(diffusion, u);
+  cache.forget_patterns();  // a pattern keeps its geometry (its key) alive; a model forgets them once bound
+  std::weak_ptr<const RegionGeometry> held = cache.geometry("all", 4);
+  diffusion.release_geometry();
+  EXPECT_FALSE(held.expired()) << "the reaction still holds it";
+  reaction.release_geometry();
+  EXPECT_TRUE(held.expired()) << "no term holds it: freed";
+  const auto again = assembled(diffusion, u);
+  EXPECT_TRUE(again.first == first.first);
+  EXPECT_EQ(again.second, first.second);
+  // Made again, and kept from then on: a second release does nothing.
+  const RegionGeometry* remade = &diffusion.geometry();
+  diffusion.release_geometry();
+  EXPECT_EQ(&diffusion.geometry(), remade);
+  EXPECT_EQ(cache.geometry("all", 4).get(), remade);
+  // A term with a geometry of its own (no cache) keeps it.
+  TermAssembly own(term(Integration::Cells, Diffusion{1.5}), "all", {&space});
+  const RegionGeometry* kept = &own.geometry();
+  own.release_geometry();
+  EXPECT_EQ(&own.geometry(), kept);
+}
+
 TEST_F(TermAssemblyCacheTest, RefusesAPatternOfAnotherMesh) {
   TermAssemblyCache cache(*mesh);
   const auto other = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Triangle));
