@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "assembly/error.hpp"
+#include "assembly/heap_trim.hpp"
 #include "assembly/processes.hpp"
 
 namespace pc {
@@ -187,6 +188,7 @@ void MumpsHandle::release_values() {
 }
 
 void MumpsHandle::run(Job job, const char* phase) {
+  if (job == Factorize) return_free_heap_pages();  // the run's peak of memory follows
   mumps_.job = job;
   dmumps_c(&mumps_);
   // INFOG is the same on every process (INFO is each one's own, -1 where another failed).

@@ -229,6 +229,7 @@ class Model : public DataView, public NonlinearProblem {
   std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
   std::map<std::string, Eigen::VectorXd> field_residuals_;
   std::map<int, std::map<std::string, Eigen::VectorXd>> kept_residuals_;  // per kept brick, per unknown
+  std::map<std::string, Eigen::VectorXd> zero_residuals_;  // a kept brick's for an unknown it does not test
   bool kept_residuals_in_snapshot_ = false;  // take_residual_snapshot() holds them
   std::map<std::string, double> residual_scales_;
   std::map<std::string, double> round_off_scales_;
