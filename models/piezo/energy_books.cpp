@@ -52,6 +52,10 @@ EnergyBooks::EnergyBooks(PiezoContactModel& built, double initial_kinetic)
     else if (dynamic_cast<const SourceBrick*>(brick)) kind = Kind::External;
     else if (dynamic_cast<const DirichletBrick*>(brick) || dynamic_cast<const UniformValueBrick*>(brick)) kind = Kind::None;
     kinds_.push_back(kind);
+    bool tests_phi = false;
+    for (const BrickTerm& bt : brick->terms())
+      for (int t : bt.term->tests()) tests_phi = tests_phi || bt.term->fields()[size_t(t)].name == "phi";
+    tests_phi_.push_back(tests_phi);
     all.push_back(b);
   }
   phi_residuals_.assign(kinds_.size(), Eigen::VectorXd());
@@ -78,7 +82,7 @@ void EnergyBooks::start(const Model& m) {
   } else {
     for (size_t b = 0; b < kinds_.size(); ++b) {
       if (kinds_[b] == Kind::Elasticity) totals_.elastic += 0.5 * u_.dot(m.brick_residual(int(b), "v"));
-      if (electric_) {
+      if (electric_ && tests_phi_[b]) {
         phi_residuals_[b] = m.brick_residual(int(b), "phi");
         if (kinds_[b] == Kind::Permittivity) totals_.electric += 0.5 * phi_.dot(phi_residuals_[b]);
       }
@@ -86,8 +90,8 @@ void EnergyBooks::start(const Model& m) {
     if (electric_) phi_total_ = m.field_residual("phi");
   }
   if (electric_ && phi_total_.size() == 0) phi_total_ = Eigen::VectorXd::Zero(phi_.size());
-  for (auto& r : phi_residuals_)
-    if (electric_ && r.size() == 0) r = Eigen::VectorXd::Zero(phi_.size());
+  for (size_t b = 0; b < phi_residuals_.size(); ++b)
+    if (electric_ && tests_phi_[b] && phi_residuals_[b].size() == 0) phi_residuals_[b] = Eigen::VectorXd::Zero(phi_.size());
   initial_stored_ = totals_.stored();
 }
 
@@ -104,7 +108,7 @@ const EnergyBalance& EnergyBooks::record(const Model& m) {
     const Eigen::VectorXd& rv = m.brick_residual(int(b), "v");
     const double power_v = k * v.dot(rv);
     double power_phi = 0;
-    if (electric_) {
+    if (electric_ && tests_phi_[b]) {  // a brick that does not test phi has no potential rows: no power
       const Eigen::VectorXd& rphi = m.brick_residual(int(b), "phi");
       power_phi = m.values("phi").dot(rphi - phi_residuals_[b]);
       if (kinds_[b] == Kind::Permittivity) electric += 0.5 * m.values("phi").dot(rphi);
@@ -177,7 +181,8 @@ std::map<std::string, Eigen::VectorXd> EnergyBooks::state() const {
   if (electric_) {
     s["energy.phi"] = phi_;
     s["energy.phi_total"] = phi_total_;
-    for (size_t b = 0; b < phi_residuals_.size(); ++b) s["energy.phi_residual." + std::to_string(b)] = phi_residuals_[b];
+    for (size_t b = 0; b < phi_residuals_.size(); ++b)
+      if (tests_phi_[b]) s["energy.phi_residual." + std::to_string(b)] = phi_residuals_[b];
   }
   return s;
 }
@@ -203,7 +208,8 @@ void EnergyBooks::restore(const std::map<std::string, Eigen::VectorXd>& s) {
   if (electric_) {
     phi_ = at("energy.phi");
     phi_total_ = at("energy.phi_total");
-    for (size_t b = 0; b < phi_residuals_.size(); ++b) phi_residuals_[b] = at("energy.phi_residual." + std::to_string(b));
+    for (size_t b = 0; b < phi_residuals_.size(); ++b)
+      if (tests_phi_[b]) phi_residuals_[b] = at("energy.phi_residual." + std::to_string(b));
   }
 }
 

@@ -63,7 +63,8 @@ class EnergyBooks {
   double initial_kinetic_ = 0, initial_stored_ = 0;
   double time_ = 0;
   Eigen::VectorXd v_, u_, phi_;                 // at the last record
-  std::vector<Eigen::VectorXd> phi_residuals_;  // each brick's potential rows at the last record
+  std::vector<char> tests_phi_;                 // per brick: its terms test phi (it has potential rows)
+  std::vector<Eigen::VectorXd> phi_residuals_;  // those bricks' potential rows at the last record (else empty)
   Eigen::VectorXd phi_total_;                   // the whole potential residual at the last record
   EnergyBalance totals_;
 };
