@@ -6,6 +6,10 @@
 namespace pc {
 
 using CsrMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+// A CSR matrix over arrays held elsewhere (a term's block: its values over a pattern it shares), and a
+// parameter that takes either kind without a copy.
+using CsrView = Eigen::Map<const CsrMatrix>;
+using CsrRef = Eigen::Ref<const CsrMatrix>;
 
 // Slot of entry (row, col) in a compressed CSR matrix, or -1 if the pattern lacks it (binary search).
 int find_slot(const CsrMatrix& matrix, int row, int col);

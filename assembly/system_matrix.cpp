@@ -6,7 +6,7 @@
 
 namespace pc {
 
-int SystemMatrix::declare(int row_field, int col_field, const CsrMatrix& block) {
+int SystemMatrix::declare(int row_field, int col_field, const CsrRef& block) {
   require(!finalized_, "SystemMatrix: declare() after finalize()");
   require(row_field >= 0 && row_field < layout_.num_fields() && col_field >= 0 && col_field < layout_.num_fields(),
           "SystemMatrix: field index out of range");
@@ -26,30 +26,40 @@ int SystemMatrix::declare(int row_field, int col_field, const CsrMatrix& block) 
 void SystemMatrix::finalize() {
   require(!finalized_, "SystemMatrix: finalize() called twice");
   const int n = layout_.size();
-  // Column lists per global row, merged over blocks.
-  std::vector<std::vector<int>> columns(n);
-  for (const Block& b : blocks_) {
-    const auto rows = layout_.global_indices(b.row_field);
-    const auto cols = layout_.global_indices(b.col_field);
-    for (int r = 0; r < b.rows; ++r) {
-      if (rows[r] < 0) continue;
-      for (int k = b.outer[r]; k < b.outer[r + 1]; ++k)
-        if (cols[b.inner[k]] >= 0) columns[rows[r]].push_back(cols[b.inner[k]]);
-    }
-  }
+  // Column lists per global row, merged over blocks, in one array: each row's room is counted first (a
+  // vector per row was a small allocation and its growth per row, half a million at the paper's 240 x 80).
   // Every free dof keeps its diagonal, so that a row no block touches shows as a zero pivot (a clear
   // solver error) rather than a structurally singular pattern.
+  std::vector<long> room(n + 1, 0);
+  for (int r = 0; r < n; ++r) room[r + 1] = 1;
+  auto for_each_entry = [&](auto&& visit) {
+    for (const Block& b : blocks_) {
+      const auto rows = layout_.global_indices(b.row_field);
+      const auto cols = layout_.global_indices(b.col_field);
+      for (int r = 0; r < b.rows; ++r) {
+        if (rows[r] < 0) continue;
+        for (int k = b.outer[r]; k < b.outer[r + 1]; ++k)
+          if (cols[b.inner[k]] >= 0) visit(rows[r], cols[b.inner[k]]);
+      }
+    }
+  };
+  for_each_entry([&](int row, int) { ++room[row + 1]; });
+  for (int r = 0; r < n; ++r) room[r + 1] += room[r];
+  std::vector<int> columns(static_cast<size_t>(room[n]));
+  std::vector<long> filled(room.begin(), room.end() - 1);
+  for (int r = 0; r < n; ++r) columns[size_t(filled[r]++)] = r;
+  for_each_entry([&](int row, int col) { columns[size_t(filled[row]++)] = col; });
   std::vector<int> outer(n + 1, 0);
   for (int r = 0; r < n; ++r) {
-    columns[r].push_back(r);
-    std::sort(columns[r].begin(), columns[r].end());
-    columns[r].erase(std::unique(columns[r].begin(), columns[r].end()), columns[r].end());
-    outer[r + 1] = outer[r] + static_cast<int>(columns[r].size());
+    const auto first = columns.begin() + room[r], last = columns.begin() + room[r + 1];
+    std::sort(first, last);
+    outer[r + 1] = outer[r] + static_cast<int>(std::unique(first, last) - first);
   }
   matrix_.resize(n, n);
   matrix_.resizeNonZeros(outer[n]);
   std::copy(outer.begin(), outer.end(), matrix_.outerIndexPtr());
-  for (int r = 0; r < n; ++r) std::copy(columns[r].begin(), columns[r].end(), matrix_.innerIndexPtr() + outer[r]);
+  for (int r = 0; r < n; ++r)
+    std::copy_n(columns.begin() + room[r], outer[r + 1] - outer[r], matrix_.innerIndexPtr() + outer[r]);
   std::fill(matrix_.valuePtr(), matrix_.valuePtr() + outer[n], 0.0);
 
   for (Block& b : blocks_) {
@@ -69,7 +79,7 @@ void SystemMatrix::finalize() {
 void SystemMatrix::set_zero() { std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0); }
 
 template <class Target>
-void SystemMatrix::scatter(int handle, const CsrMatrix& block, double factor, Target&& target) const {
+void SystemMatrix::scatter(int handle, const CsrRef& block, double factor, Target&& target) const {
   require(finalized_, "SystemMatrix: add() before finalize()");
   require(handle >= 0 && handle < num_blocks(), "SystemMatrix: unknown block handle ", handle);
   const Block& b = blocks_[handle];
@@ -102,16 +112,16 @@ void SystemMatrix::scatter(int handle, const CsrMatrix& block, double factor, Ta
   }
 }
 
-void SystemMatrix::add(int handle, const CsrMatrix& block, double factor) { add_to(handle, block, factor, matrix_); }
+void SystemMatrix::add(int handle, const CsrRef& block, double factor) { add_to(handle, block, factor, matrix_); }
 
-void SystemMatrix::add_to(int handle, const CsrMatrix& block, double factor, CsrMatrix& target) const {
+void SystemMatrix::add_to(int handle, const CsrRef& block, double factor, CsrMatrix& target) const {
   require(target.rows() == matrix_.rows() && target.nonZeros() == matrix_.nonZeros(),
           "SystemMatrix: add_to() a matrix of another pattern");
   double* values = target.valuePtr();
   scatter(handle, block, factor, [values](int, int slot, double value) { values[slot] += value; });
 }
 
-void SystemMatrix::add_to_rows(int handle, const CsrMatrix& block, double factor, std::span<const long> row_start,
+void SystemMatrix::add_to_rows(int handle, const CsrRef& block, double factor, std::span<const long> row_start,
                                std::span<double> values) const {
   require(long(row_start.size()) == long(matrix_.rows()), "SystemMatrix: add_to_rows() with ", row_start.size(),
           " row starts for ", matrix_.rows(), " rows");

@@ -19,22 +19,22 @@ class SystemMatrix {
   explicit SystemMatrix(const DofLayout& layout) : layout_(layout) {}
 
   // Declares a block with rows in field row_field and columns in col_field; returns its handle.
-  int declare(int row_field, int col_field, const CsrMatrix& block);
+  int declare(int row_field, int col_field, const CsrRef& block);
   void finalize();
   bool finalized() const { return finalized_; }
 
   void set_zero();
   // matrix += factor * block (the block must have the pattern it was declared with; an entry outside the
   // global pattern is refused).
-  void add(int handle, const CsrMatrix& block, double factor = 1.0);
+  void add(int handle, const CsrRef& block, double factor = 1.0);
   // target += factor * block, for a matrix of this one's pattern held apart from it (e.g. the Jacobian
   // formed from the linear part this matrix holds).
-  void add_to(int handle, const CsrMatrix& block, double factor, CsrMatrix& target) const;
+  void add_to(int handle, const CsrRef& block, double factor, CsrMatrix& target) const;
   // The same sum into values held apart from the matrix, for some of its rows only: the row `row`'s
   // slots are values[row_start[row]] onwards, in the pattern's order, and a row with row_start -1 is not
   // held (an entry of the block on it is refused). E.g. the rows that nonlinear terms fill, summed
   // without a second copy of the whole matrix.
-  void add_to_rows(int handle, const CsrMatrix& block, double factor, std::span<const long> row_start,
+  void add_to_rows(int handle, const CsrRef& block, double factor, std::span<const long> row_start,
                    std::span<double> values) const;
   const CsrMatrix& matrix() const { return matrix_; }
   int num_blocks() const { return static_cast<int>(blocks_.size()); }
@@ -43,7 +43,7 @@ class SystemMatrix {
   // target(row, slot) += factor * block for each of the block's entries on a free row and column; target
   // is given the global row and the slot (an index into the matrix's pattern) of each entry.
   template <class Target>
-  void scatter(int handle, const CsrMatrix& block, double factor, Target&& target) const;
+  void scatter(int handle, const CsrRef& block, double factor, Target&& target) const;
 
   struct Block {
     int row_field, col_field, rows, cols;

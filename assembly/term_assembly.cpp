@@ -113,13 +113,21 @@ void TermAssembly::element_dofs(int field, int element, std::vector<int>& dofs) 
 }
 
 void TermAssembly::build_blocks(TermAssemblyCache* cache) {
-  blocks_.clear();
+  patterns_.clear();
+  block_values_.clear();
   for (const Coupling& c : term_->couplings()) {
     const FESpace& test = *spaces_[c.test];
     const FESpace& trial = *spaces_[c.trial];
-    blocks_.push_back(cache ? cache->pattern(geometry_, test, trial)->zero_matrix()
-                            : make_block_pattern(*geometry_, test, trial).zero_matrix());
+    patterns_.push_back(cache ? cache->pattern(geometry_, test, trial)
+                              : std::make_shared<const BlockPattern>(make_block_pattern(*geometry_, test, trial)));
+    block_values_.emplace_back(patterns_.back()->inner.size(), 0.0);
   }
+}
+
+CsrView TermAssembly::block(int k) const {
+  const BlockPattern& p = *patterns_.at(size_t(k));
+  return CsrView(p.rows, p.cols, Eigen::Index(p.inner.size()), p.outer.data(), p.inner.data(),
+                 block_values_[size_t(k)].data());
 }
 
 void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, double time,
@@ -141,7 +149,7 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
   bool want_residual = false;
   for (auto* r : residuals) want_residual = want_residual || r != nullptr;
   if (tangent)
-    for (CsrMatrix& b : blocks_) std::fill(b.valuePtr(), b.valuePtr() + b.nonZeros(), 0.0);
+    for (std::vector<double>& b : block_values_) std::fill(b.begin(), b.end(), 0.0);
   if (!want_residual && !tangent) return;
 
   const RegionGeometry& geo = geometry();
@@ -226,10 +234,9 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
       const Eigen::MatrixXd& K = w.local.tangent[k];
       const std::vector<int>& row_dofs = w.dofs[term.couplings()[k].test];
       const std::vector<int>& col_dofs = w.dofs[term.couplings()[k].trial];
-      CsrMatrix& block = blocks_[k];
-      const int* outer = block.outerIndexPtr();
-      const int* inner = block.innerIndexPtr();
-      double* target = block.valuePtr();
+      const int* outer = patterns_[k]->outer.data();
+      const int* inner = patterns_[k]->inner.data();
+      double* target = block_values_[k].data();
       // Each entry is in its row's pattern (the element made it): a binary search over the row's sorted
       // columns finds its slot.
       for (int r = 0; r < int(K.rows()); ++r) {

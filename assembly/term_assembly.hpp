@@ -45,8 +45,9 @@ class TermAssembly {
   // and kept from then on. Nothing happens to a term built without a cache, or that released it before.
   void release_geometry();
   const FESpace& space(int field) const { return *spaces_[field]; }
-  // Tangent block of coupling k, with the values of the last assembly that asked for tangents.
-  const CsrMatrix& block(int k) const { return blocks_[k]; }
+  // Tangent block of coupling k, with the values of the last assembly that asked for tangents: the term's
+  // own values over a pattern it may share (a view, valid while the assembly lives).
+  CsrView block(int k) const;
 
   // values[f]: coefficients of field f. Residual blocks are added to residuals[t] (one per test field,
   // null to skip); tangent blocks are overwritten when tangent is true.
@@ -76,7 +77,10 @@ class TermAssembly {
   bool released_ = false;
   std::vector<const FESpace*> spaces_;
   std::vector<std::vector<ShapeTable>> tables_;  // [field][local_face + 1]
-  std::vector<CsrMatrix> blocks_;
+  // Coupling k's block: the pattern (shared through the cache with the other terms over the region and
+  // spaces: inertia, viscosity and elasticity on the body's velocity keep one) and the term's own values.
+  std::vector<std::shared_ptr<const BlockPattern>> patterns_;
+  std::vector<std::vector<double>> block_values_;
   std::int64_t elements_assembled_ = 0;
 
   // What one element needs while it is computed: a thread has one at a time, a loop on several threads

@@ -25,16 +25,15 @@ std::shared_ptr<const BlockPattern> TermAssemblyCache::pattern(const std::shared
                                                                const FESpace& test, const FESpace& trial) {
   require(geometry != nullptr && &geometry->mesh() == &mesh_ && &test.mesh() == &mesh_ && &trial.mesh() == &mesh_,
           "TermAssemblyCache: a pattern of another mesh");
-  // A geometry that serves as a key is kept, so that its address is never another geometry's.
-  pattern_geometries_.emplace(geometry.get(), geometry);
-  auto& slot = patterns_[{geometry.get(), &test, &trial}];
-  if (!slot) slot = std::make_shared<const BlockPattern>(make_block_pattern(*geometry, test, trial));
-  return slot;
+  std::weak_ptr<const BlockPattern>& slot = patterns_[{geometry->region(), &test, &trial}];
+  std::shared_ptr<const BlockPattern> held = slot.lock();
+  if (!held) {
+    held = std::make_shared<const BlockPattern>(make_block_pattern(*geometry, test, trial));
+    slot = held;
+  }
+  return held;
 }
 
-void TermAssemblyCache::forget_patterns() {
-  patterns_.clear();
-  pattern_geometries_.clear();
-}
+void TermAssemblyCache::forget_patterns() { patterns_.clear(); }
 
 }  // namespace pc

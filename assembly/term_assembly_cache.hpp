@@ -3,8 +3,7 @@
 // inertia, piezoelectric coupling, permittivity -- all integrate over the body): the geometry of a region at
 // a quadrature degree, and the pattern of a block between two spaces over it. Without it each term kept
 // (and computed) its own copies, the largest part of a model's memory before its factorisation.
-// Patterns live until forget_patterns(), geometries as long as a term holds them; geometries and spaces
-// are told apart by identity.
+// Geometries and patterns live as long as a term holds them; spaces are told apart by identity.
 #include <map>
 #include <memory>
 #include <string>
@@ -32,8 +31,10 @@ class TermAssemblyCache {
   // The spaces must outlive the cache (a model's do: they are its fields').
   std::shared_ptr<const BlockPattern> pattern(const std::shared_ptr<const RegionGeometry>& geometry,
                                               const FESpace& test, const FESpace& trial);
-  // Drops the patterns (the terms' blocks have them): once a model's terms are bound they would only
-  // serve a brick rebuilt later, which makes its own again.
+  // The pattern depends on the region's elements and the spaces, not on the geometry's quadrature: terms
+  // of other degrees over the region (inertia's and elasticity's) share it.
+  // Drops the cache's hold on the patterns: the terms' blocks hold those they use, and a pattern no block
+  // holds any more is freed (the cache holds them weakly anyway, so this only forgets).
   void forget_patterns();
 
  private:
@@ -42,9 +43,7 @@ class TermAssemblyCache {
   // Held by the terms, not here: a geometry no term holds any more (linear terms release theirs once
   // assembled, TermAssembly::release_geometry) is freed, and made again if asked for.
   std::map<std::pair<std::string, int>, std::weak_ptr<const RegionGeometry>> geometries_;
-  std::map<std::tuple<const RegionGeometry*, const FESpace*, const FESpace*>, std::shared_ptr<const BlockPattern>>
-      patterns_;
-  std::map<const RegionGeometry*, std::shared_ptr<const RegionGeometry>> pattern_geometries_;  // kept alive: keys
+  std::map<std::tuple<std::string, const FESpace*, const FESpace*>, std::weak_ptr<const BlockPattern>> patterns_;
 };
 
 }  // namespace pc

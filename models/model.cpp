@@ -394,8 +394,9 @@ void Model::finalize() {
     owned_cells_ = cells_of_part(partition_cells(*mesh_, processes::count()), processes::rank());
     assembly_cache_->set_owned_cells(owned_cells_);
   }
+  // The cache holds geometries and patterns weakly: the terms' blocks hold theirs, and a brick bound again
+  // later shares them.
   for (int b = 0; b < int(bricks_.size()); ++b) bind_brick(b);
-  assembly_cache_->forget_patterns();  // the blocks have them; the geometries stay shared
   for (const auto& brick : bricks_)
     for (const DirichletCondition& d : brick->dirichlet_conditions()) {
       const FESpace& s = space(d.unknown);
@@ -532,11 +533,11 @@ Model::System& Model::system() {
     if (bricks_[b]->linear()) continue;
     for (const BoundTerm& bt : brick_states_[b]->terms)
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
-        const CsrMatrix& block = bt.assembly->block(int(k));
+        const CsrView block = bt.assembly->block(int(k));
         const auto rows = s.layout.global_indices(s.layout.field_index(bt.field_names[bt.assembly->term().couplings()[k].test]));
         const auto cols = s.layout.global_indices(s.layout.field_index(bt.trial_unknowns[k]));
         for (int r = 0; r < block.rows(); ++r)
-          for (CsrMatrix::InnerIterator it(block, r); it; ++it) {
+          for (CsrView::InnerIterator it(block, r); it; ++it) {
             if (rows[r] >= 0) touched.insert(rows[r]);
             if (cols[it.col()] >= 0) touched.insert(cols[it.col()]);
           }
@@ -570,7 +571,7 @@ const CsrMatrix& Model::jacobian() const {
       s.jacobian = linear;
     else
       std::copy_n(linear.valuePtr(), linear.nonZeros(), s.jacobian.valuePtr());
-    for_each_block(s, /*linear=*/false, [&](int handle, const CsrMatrix& block, double factor) {
+    for_each_block(s, /*linear=*/false, [&](int handle, const CsrView& block, double factor) {
       s.matrix->add_to(handle, block, factor, s.jacobian);
     });
     s.jacobian_current = true;
@@ -585,7 +586,7 @@ void Model::nonlinear_part(std::vector<double>& values) {
   require(s.linear_sum > 0, "Model: nonlinear_part() before assemble(true)");
   require_factors_of_last_tangent(s, "nonlinear_part()");
   values.assign(size_t(s.nonlinear_slots), 0.0);
-  for_each_block(s, /*linear=*/false, [&](int handle, const CsrMatrix& block, double factor) {
+  for_each_block(s, /*linear=*/false, [&](int handle, const CsrView& block, double factor) {
     s.matrix->add_to_rows(handle, block, factor, s.nonlinear_row_start, values);
   });
   jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -745,7 +746,7 @@ void Model::refresh_brick(int index) {
 void Model::refresh_linear_sum(System& s) {
   s.matrix->set_zero();
   for_each_block(s, /*linear=*/true,
-                 [&](int handle, const CsrMatrix& block, double factor) { s.matrix->add(handle, block, factor); });
+                 [&](int handle, const CsrView& block, double factor) { s.matrix->add(handle, block, factor); });
 }
 
 void Model::assemble(bool tangent) {
@@ -785,7 +786,7 @@ void Model::assemble(bool tangent) {
   // piezoelectric stress has no net force on an interior node), which leaves a net scale that is itself
   // round-off. One pass over K gives the product (added into `out`) and both norms: the residual is
   // bandwidth-bound, and K is its largest operand.
-  auto add_measured_product = [&](const std::string& u, const CsrMatrix& K, const Eigen::VectorXd& x,
+  auto add_measured_product = [&](const std::string& u, const CsrView& K, const Eigen::VectorXd& x,
                                   Eigen::VectorXd& out) {
     const auto global = s.layout.global_indices(s.layout.field_index(u));
     const int* start = K.outerIndexPtr();
@@ -969,7 +970,7 @@ void Model::assemble(bool tangent) {
     for (const BoundTerm& bt : state.terms)
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
         const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
-        const CsrMatrix& K = bt.assembly->block(int(k));
+        const CsrView K = bt.assembly->block(int(k));
         const bool alone = !kept && pieces.at(u) == 1;
         add_measured_product(u, K, this->values(bt.trial_fields[k]), alone ? field_residuals_.at(u) : brick_residual.at(u));
         if (!alone) touched.insert(u);

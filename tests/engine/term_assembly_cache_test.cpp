@@ -64,6 +64,12 @@ TEST_F(TermAssemblyCacheTest, TermsOverOneRegionAndSpaceShareOneGeometryAndPatte
   EXPECT_EQ(cache.pattern(cache.geometry("all", 4), space, space).get(),
             cache.pattern(cache.geometry("all", 4), space, space).get());
   EXPECT_NE(diffusion.block(0).valuePtr(), reaction.block(0).valuePtr());
+  // The two blocks are their own values over one pattern's arrays.
+  EXPECT_EQ(diffusion.block(0).innerIndexPtr(), reaction.block(0).innerIndexPtr());
+  EXPECT_EQ(diffusion.block(0).outerIndexPtr(), reaction.block(0).outerIndexPtr());
+  // A pattern is of the region's elements and the spaces: a geometry of another degree has the same one.
+  const auto held = cache.pattern(cache.geometry("all", 4), space, space);
+  EXPECT_EQ(cache.pattern(cache.geometry("all", 1), space, space).get(), held.get());
   const auto pattern = cache.pattern(cache.geometry("all", 4), space, space);
   cache.forget_patterns();  // a pattern asked for again is made again, the same
   const auto again = cache.pattern(cache.geometry("all", 4), space, space);
