@@ -21,15 +21,6 @@ void element_dofs(const FESpace& space, const RegionGeometry& geometry, int elem
   }
 }
 
-CsrMatrix BlockPattern::zero_matrix() const {
-  CsrMatrix m(rows, cols);
-  m.resizeNonZeros(Eigen::Index(inner.size()));
-  std::copy(outer.begin(), outer.end(), m.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), m.innerIndexPtr());
-  std::fill_n(m.valuePtr(), inner.size(), 0.0);
-  return m;
-}
-
 BlockPattern make_block_pattern(const RegionGeometry& geometry, const FESpace& test, const FESpace& trial) {
   BlockPattern p;
   std::vector<int> rows, cols;

@@ -14,8 +14,6 @@ namespace pc {
 struct BlockPattern {
   int rows = 0, cols = 0;
   std::vector<int> outer, inner;  // the CSR pattern (no values: each term's block has its own)
-  // A compressed matrix of this pattern, with zero values.
-  CsrMatrix zero_matrix() const;
 };
 
 // The dofs of a space an element of the region touches: all of its cell's (cells), or those on its

@@ -3,6 +3,20 @@
 #include "assembly/error.hpp"
 
 namespace pc {
+namespace {
+
+// The entry the cache holds weakly under `key`, or a new one from make() if none is alive.
+template <class Map, class Key, class Make>
+auto held_or_made(Map& map, const Key& key, Make&& make) {
+  auto held = map[key].lock();
+  if (!held) {
+    held = make();
+    map[key] = held;
+  }
+  return held;
+}
+
+}  // namespace
 
 void TermAssemblyCache::set_owned_cells(std::vector<char> owned) {
   require(geometries_.empty(), "TermAssemblyCache: set_owned_cells() after a geometry was made");
@@ -12,26 +26,16 @@ void TermAssemblyCache::set_owned_cells(std::vector<char> owned) {
 }
 
 std::shared_ptr<const RegionGeometry> TermAssemblyCache::geometry(const std::string& region, int degree) {
-  std::weak_ptr<const RegionGeometry>& slot = geometries_[{region, degree}];
-  std::shared_ptr<const RegionGeometry> held = slot.lock();
-  if (!held) {
-    held = std::make_shared<const RegionGeometry>(mesh_, region, degree, owned_cells_);
-    slot = held;
-  }
-  return held;
+  return held_or_made(geometries_, std::pair{region, degree},
+                      [&] { return std::make_shared<const RegionGeometry>(mesh_, region, degree, owned_cells_); });
 }
 
 std::shared_ptr<const BlockPattern> TermAssemblyCache::pattern(const std::shared_ptr<const RegionGeometry>& geometry,
                                                                const FESpace& test, const FESpace& trial) {
   require(geometry != nullptr && &geometry->mesh() == &mesh_ && &test.mesh() == &mesh_ && &trial.mesh() == &mesh_,
           "TermAssemblyCache: a pattern of another mesh");
-  std::weak_ptr<const BlockPattern>& slot = patterns_[{geometry->region(), &test, &trial}];
-  std::shared_ptr<const BlockPattern> held = slot.lock();
-  if (!held) {
-    held = std::make_shared<const BlockPattern>(make_block_pattern(*geometry, test, trial));
-    slot = held;
-  }
-  return held;
+  return held_or_made(patterns_, std::tuple{geometry->region(), &test, &trial},
+                      [&] { return std::make_shared<const BlockPattern>(make_block_pattern(*geometry, test, trial)); });
 }
 
 void TermAssemblyCache::forget_patterns() { patterns_.clear(); }
