@@ -17,7 +17,12 @@
 //                       the initial potential).
 // On a shared machine the run's phases include the time the process waits for a core (a step's solve then
 // takes 4 ms longer now and then at 120 x 40), which the median of the timed solves leaves out: the two
-// ratios are then too large by the load's share.
+// ratios are then too large by the load's share. And where the machine's speed drifts between the run and
+// the timed solves after it, both ratios move with the drift (1.4 to 2.4 for the step at 120 x 40 in three
+// runs of one hour). Hence the same two in units of the run's own solve pair, timed in place:
+//   "[own solves]":     the unit is the median solve phase of the steps of one iteration (on the Schur path
+//                       exactly one reduction and one expansion); the step's ratio is the median over those
+//                       steps of each one's wall time over its own solve phase (1.54 to 1.61 in those runs).
 //   "solve phase per step [solves]": the solve phase over the steps, in that unit (1: one solve pair per
 //                       step, as Newton on the contact dofs makes; the time estimate's solve adds one).
 // Prints a markdown table and writes a CSV row per mesh. Further arguments are scene overrides, as --set
@@ -100,6 +105,11 @@ struct Breakdown {
   SolveTimes one_solve;
   double iteration_in_solves = 0, one_iteration_step = 0;
   int one_iteration_steps = 0;
+  // The same two ratios in units of the run's own solve pairs: the median solve phase of the steps of one
+  // iteration (one reduction and one expansion each), and the median over those steps of each one's wall
+  // time over its own solve phase. Both sides are timed in the same few milliseconds, so that a machine
+  // whose speed drifts between the run and the timed solves above moves neither.
+  double own_solve = 0, iteration_in_own_solves = 0, one_iteration_step_in_own_solves = 0;
 };
 
 Breakdown run_mesh(int nx, int ny, int steps, const std::vector<std::string>& extra_overrides) {
@@ -115,12 +125,16 @@ Breakdown run_mesh(int nx, int ny, int steps, const std::vector<std::string>& ex
   FoundationRunOptions options;
   options.directory = dir.string();
   options.progress = false;
-  std::vector<double> one_iteration_steps;
+  std::vector<double> one_iteration_steps, their_solves, their_ratios;
   auto last = Clock::now();
   options.after_step = [&](const StepRecord& r) {
     const double seconds = seconds_since(last);
     last = Clock::now();
-    if (r.step > 1 && r.newton.iterations == 1 && r.cutbacks == 0) one_iteration_steps.push_back(seconds);
+    if (r.step > 1 && r.newton.iterations == 1 && r.cutbacks == 0) {
+      one_iteration_steps.push_back(seconds);
+      their_solves.push_back(r.newton.solve_seconds);
+      if (r.newton.solve_seconds > 0) their_ratios.push_back(seconds / r.newton.solve_seconds);
+    }
   };
   Breakdown b;
   b.nx = nx;
@@ -134,6 +148,11 @@ Breakdown run_mesh(int nx, int ny, int steps, const std::vector<std::string>& ex
   b.iteration_in_solves = newton_work / r.newton_iterations_total / b.one_solve.in_iteration;
   b.one_iteration_step = median(one_iteration_steps) / b.one_solve.in_iteration;
   b.one_iteration_steps = int(one_iteration_steps.size());
+  if (!their_ratios.empty()) {
+    b.own_solve = median(their_solves);
+    b.iteration_in_own_solves = newton_work / r.newton_iterations_total / b.own_solve;
+    b.one_iteration_step_in_own_solves = median(their_ratios);
+  }
   return b;
 }
 
@@ -156,7 +175,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> columns = {"nx", "ny", "ndof", "steps", "newton_iterations", "factorizations", "wall_s"};
   for (const RunPhase& p : runs.front().phases) columns.push_back(p.name + "_s");
   for (const char* c : {"one_solve_s", "one_solve_back_to_back_s", "solve_per_iteration_s", "iteration_in_solves",
-                        "one_iteration_step_in_solves", "one_iteration_steps"})
+                        "one_iteration_step_in_solves", "one_iteration_steps", "own_solve_s",
+                        "iteration_in_own_solves", "one_iteration_step_in_own_solves"})
     columns.push_back(c);
   CsvLog csv(out, columns);
 
@@ -198,6 +218,13 @@ int main(int argc, char** argv) {
   row("step of one Newton iteration [solves]", [&](const Breakdown& b) {
     return text("%.2f (median of %d)", b.one_iteration_step, b.one_iteration_steps);
   });
+  row("the run's own solve pair (median over those steps)", [&](const Breakdown& b) {
+    return text("%.2f ms", 1e3 * b.own_solve);
+  });
+  row("Newton iteration [own solves]", [&](const Breakdown& b) { return text("%.2f", b.iteration_in_own_solves); });
+  row("step of one Newton iteration [own solves]", [&](const Breakdown& b) {
+    return text("%.2f", b.one_iteration_step_in_own_solves);
+  });
 
   for (const Breakdown& b : runs) {
     const FoundationRunResult& r = b.result;
@@ -205,7 +232,8 @@ int main(int argc, char** argv) {
                                   double(r.newton_iterations_total), double(r.factorizations), r.wall_seconds};
     for (const RunPhase& p : b.phases) values.push_back(p.seconds);
     for (double v : {b.one_solve.in_iteration, b.one_solve.back_to_back, r.solve_seconds / r.newton_iterations_total,
-                     b.iteration_in_solves, b.one_iteration_step, double(b.one_iteration_steps)})
+                     b.iteration_in_solves, b.one_iteration_step, double(b.one_iteration_steps), b.own_solve,
+                     b.iteration_in_own_solves, b.one_iteration_step_in_own_solves})
       values.push_back(v);
     csv.row(values);
   }
