@@ -49,6 +49,7 @@ struct Model::BrickState {
   std::map<std::string, std::uint64_t> r0_data_versions;
   std::map<std::string, Eigen::VectorXd> r0;  // per test unknown
   std::map<std::string, bool> r0_zero;        // per test unknown: every entry of r0 is zero
+  std::set<std::string> tested;               // the unknowns the terms test, as bound
 };
 
 struct Model::System {
@@ -367,6 +368,8 @@ void Model::bind_brick(int index) {
   require(state.terms.empty() || state.terms.size() == bound.size(), "brick '", brick.name(),
           "' changed its number of terms in update()");
   state.terms = std::move(bound);
+  state.tested.clear();
+  for (const BoundTerm& bt : state.terms) state.tested.insert(bt.test_unknowns.begin(), bt.test_unknowns.end());
   state.tangent_valid = false;
   state.r0_valid = false;
 }
@@ -833,8 +836,7 @@ void Model::assemble(bool tangent) {
   // brick_residual() gives the unknown's one zero vector for it: the energy books keep every brick, and a
   // zero vector per brick and untested unknown was 2 MB at the paper's 240 x 80.
   for (auto& [b, kept] : kept_residuals_) {
-    std::set<std::string> tested;
-    for (const BoundTerm& bt : brick_states_[b]->terms) tested.insert(bt.test_unknowns.begin(), bt.test_unknowns.end());
+    const std::set<std::string>& tested = brick_states_[b]->tested;
     for (const std::string& u : unknown_names_) {
       const Eigen::Index size = tested.count(u) ? space(u).num_dofs() : 0;
       if (Eigen::VectorXd& r = kept[u]; r.size() != size) r = Eigen::VectorXd::Zero(size);
