@@ -36,18 +36,25 @@ std::uint64_t mix_entry(std::uint64_t hash, int row, int col) {
   return hash ^ (hash >> 29);
 }
 
-// The fingerprint of the coordinates MUMPS is given for `a` (all, or the lower triangle), and their count.
-std::uint64_t pattern_fingerprint(const CsrMatrix& a, bool lower, std::size_t& entries) {
+// Calls visit(row, col) for each coordinate MUMPS is given for `a` (all, or the lower triangle), in CSR
+// order, and returns their fingerprint.
+template <class Visit>
+std::uint64_t visit_coordinates(const CsrMatrix& a, bool lower, Visit&& visit) {
   std::uint64_t hash = mix_entry(0, int(a.rows()), int(a.cols()));
-  entries = 0;
   for (int row = 0; row < a.rows(); ++row)
     for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
       const int col = a.innerIndexPtr()[slot];
       if (lower && col > row) continue;
       hash = mix_entry(hash, row, col);
-      ++entries;
+      visit(row, col);
     }
   return hash;
+}
+
+// The fingerprint of the coordinates MUMPS is given for `a`, and their count.
+std::uint64_t pattern_fingerprint(const CsrMatrix& a, bool lower, std::size_t& entries) {
+  entries = 0;
+  return visit_coordinates(a, lower, [&](int, int) { ++entries; });
 }
 
 }  // namespace
@@ -82,26 +89,18 @@ void MumpsHandle::stop() {
 
 // CSR order is a valid coordinate order, so the values array of the same matrix serves MUMPS as is in
 // General mode.
-void MumpsHandle::fill_coordinates(const CsrMatrix& a) {
-  const bool lower = symmetry() == Symmetric;
-  // Exactly as many entries as MUMPS is given (no capacity to spare).
-  std::size_t count = 0;
-  for (int row = 0; row < a.rows(); ++row)
-    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot)
-      count += !lower || a.innerIndexPtr()[slot] <= row;
+std::uint64_t MumpsHandle::fill_coordinates(const CsrMatrix& a, std::size_t expected) {
   std::vector<MUMPS_INT>().swap(rows_);
   std::vector<MUMPS_INT>().swap(cols_);
-  rows_.reserve(count);
-  cols_.reserve(count);
-  for (int row = 0; row < a.rows(); ++row)
-    for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
-      const int col = a.innerIndexPtr()[slot];
-      if (lower && col > row) continue;
-      rows_.push_back(row + 1);
-      cols_.push_back(col + 1);
-    }
+  rows_.reserve(expected);
+  cols_.reserve(expected);
+  const std::uint64_t fingerprint = visit_coordinates(a, symmetry() == Symmetric, [&](int row, int col) {
+    rows_.push_back(row + 1);
+    cols_.push_back(col + 1);
+  });
   coordinates_held_ = true;
   point_at_coordinates();
+  return fingerprint;
 }
 
 void MumpsHandle::point_at_coordinates() {
@@ -125,8 +124,9 @@ void MumpsHandle::set_pattern(const CsrMatrix& a, Symmetry symmetry) {
   }
   release_values();
   mumps_.n = static_cast<MUMPS_INT>(a.rows());
+  // The count first, so that the coordinates take exactly as much room as MUMPS is given.
   pattern_fingerprint_ = pattern_fingerprint(a, symmetry == Symmetric, pattern_entries_);
-  fill_coordinates(a);
+  fill_coordinates(a, pattern_entries_);
   // No values (released above): the analysis depends on the pattern only.
 }
 
@@ -147,12 +147,14 @@ bool MumpsHandle::has_pattern(const CsrMatrix& a) const {
 void MumpsHandle::set_values(const CsrMatrix& a, const Eigen::VectorXd& row_scale) {
   require(a.rows() == mumps_.n && a.isCompressed(), "MUMPS (", owner_, "): values of another pattern");
   if (!coordinates_held_) {
-    std::size_t entries = 0;
-    const std::uint64_t fingerprint = pattern_fingerprint(a, symmetry() == Symmetric, entries);
-    require(entries == pattern_entries_ && fingerprint == pattern_fingerprint_, "MUMPS (", owner_,
-            "): values of another pattern (", entries, " entries given, the analysed pattern has ",
-            pattern_entries_, ")");
-    fill_coordinates(a);
+    // Made and checked in one pass over the pattern (a factorisation per Newton iteration pays it).
+    const std::uint64_t fingerprint = fill_coordinates(a, pattern_entries_);
+    const std::size_t entries = rows_.size();
+    if (entries != pattern_entries_ || fingerprint != pattern_fingerprint_) {
+      release_values();
+      fail("MUMPS (", owner_, "): values of another pattern (", entries, " entries given, the analysed pattern has ",
+           pattern_entries_, ")");
+    }
   }
   // MUMPS only reads the values; its C interface is not const-correct.
   double* values = const_cast<double*>(a.valuePtr());

@@ -61,9 +61,9 @@ class MumpsHandle {
  private:
   void start(Symmetry symmetry);
   void stop();
-  // Fills rows_ and cols_ with the coordinates MUMPS is given for `a` (all, or the lower triangle), and
-  // points MUMPS at them.
-  void fill_coordinates(const CsrMatrix& a);
+  // Fills rows_ and cols_ with the coordinates MUMPS is given for `a` (all, or the lower triangle; room
+  // for `expected` made first), points MUMPS at them, and returns their fingerprint.
+  std::uint64_t fill_coordinates(const CsrMatrix& a, std::size_t expected);
   void point_at_coordinates();
 
   const char* owner_;

@@ -87,19 +87,26 @@ std::optional<Eigen::VectorXd> RowSymmetrizer::scale(const CsrMatrix& a, double 
       }
     }
   }
-  if (!symmetric_with(a, s, tolerance)) return std::nullopt;
+  if (!symmetric_with(a, s, tolerance, row_max)) return std::nullopt;
   return s;
 }
 
 bool RowSymmetrizer::symmetric_with(const CsrMatrix& a, const Eigen::VectorXd& s, double tolerance) const {
+  const int n = int(a.rows());
+  std::vector<double> row_max(n, 0);
+  for (int i = 0; i < n; ++i)
+    for (int k = a.outerIndexPtr()[i]; k < a.outerIndexPtr()[i + 1]; ++k)
+      row_max[i] = std::max(row_max[i], std::abs(a.valuePtr()[k]));
+  return symmetric_with(a, s, tolerance, row_max);
+}
+
+bool RowSymmetrizer::symmetric_with(const CsrMatrix& a, const Eigen::VectorXd& s, double tolerance,
+                                    const std::vector<double>& row_max) const {
   if (mirror_.empty() && nonzeros_ > 0) return false;
   const int n = int(a.rows());
   const int* start = a.outerIndexPtr();
   const int* column = a.innerIndexPtr();
   const double* value = a.valuePtr();
-  std::vector<double> row_max(n, 0);
-  for (int i = 0; i < n; ++i)
-    for (int k = start[i]; k < start[i + 1]; ++k) row_max[i] = std::max(row_max[i], std::abs(value[k]));
   for (int i = 0; i < n; ++i)
     for (int k = start[i]; k < start[i + 1]; ++k) {
       const int j = column[k];

@@ -46,6 +46,10 @@ class RowSymmetrizer {
   std::optional<Eigen::VectorXd> scale(const CsrMatrix& a, double tolerance, std::vector<int>* component) const;
   // Whether every entry pair of `a` agrees under the scale s, to `tolerance` of the larger scaled row.
   bool symmetric_with(const CsrMatrix& a, const Eigen::VectorXd& s, double tolerance) const;
+  // The same, with each row's largest |entry| given (scale() has them already: one pass fewer per
+  // factorisation of the full path).
+  bool symmetric_with(const CsrMatrix& a, const Eigen::VectorXd& s, double tolerance,
+                      const std::vector<double>& row_max) const;
 
   long rows_ = 0, nonzeros_ = 0;
   std::vector<int> mirror_;  // the slot of (j, i) for the slot of (i, j); empty: the pattern is not symmetric
