@@ -6,6 +6,8 @@
 #include <string>
 #include <thread>
 
+#include <Eigen/Core>
+
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
 
@@ -37,6 +39,11 @@ int assembly_threads() {
 void set_assembly_threads(int threads) {
   require(threads >= 0, "set_assembly_threads: the thread count must be >= 1 (0: the default), got ", threads);
   chosen_threads.store(threads);
+  // Eigen's own parallel products (a sparse matrix times a vector: the solvers' residual checks, GMRES)
+  // take the same count, so that solver.threads = 1 is one thread, not one plus Eigen's spinning pool.
+  Eigen::setNbThreads(assembly_threads());
 }
+
+int eigen_product_threads() { return Eigen::nbThreads(); }
 
 }  // namespace pc

@@ -11,8 +11,11 @@
 namespace pc {
 
 int assembly_threads();
-// threads >= 1; 0 goes back to the default.
+// threads >= 1; 0 goes back to the default. Eigen's parallel products (Eigen::setNbThreads) follow it.
 void set_assembly_threads(int threads);
+// The threads of Eigen's parallel products inside the libraries (Eigen::nbThreads() as they see it: they
+// are built with OpenMP, a caller may not be, and Eigen then answers 1 in the caller's code).
+int eigen_product_threads();
 // The default: PIEZOCONTACT_THREADS (an integer >= 1, else pc::Error naming it and its value), or the
 // cores available divided by the processes of the run (at least 1).
 int default_assembly_threads();

@@ -1,7 +1,7 @@
 // Threaded assembly (assembly/threads.hpp) is bitwise the serial one: a nonlinear term's residual and
 // tangent over cells and faces, P1 and P2, 2D and 3D, on 1, 2 and 3 threads (more threads than this
 // machine's cores included); an element that throws is reported as the first failing element, whatever
-// the thread that met it; PIEZOCONTACT_THREADS is read and checked.
+// the thread that met it; PIEZOCONTACT_THREADS is read and checked; Eigen's own products follow the count.
 #include "assembly/threads.hpp"
 
 #include <gtest/gtest.h>
@@ -110,6 +110,18 @@ TEST(Threads, TheEnvironmentVariableIsReadAndChecked) {
   ::unsetenv("PIEZOCONTACT_THREADS");
   EXPECT_GE(assembly_threads(), 1);
   EXPECT_THROW(set_assembly_threads(-1), Error);
+}
+
+// Eigen's parallel products (a sparse matrix times a vector) take the same count: solver.threads = 1 runs
+// on one thread.
+TEST(Threads, EigensProductsFollowTheCount) {
+  ThreadsGuard guard;
+  for (int threads : {1, 3, 2}) {
+    set_assembly_threads(threads);
+    EXPECT_EQ(eigen_product_threads(), threads);
+  }
+  set_assembly_threads(0);
+  EXPECT_EQ(eigen_product_threads(), default_assembly_threads());
 }
 
 }  // namespace
