@@ -73,6 +73,7 @@ class MumpsHandle {
   bool coordinates_held_ = false;
   std::size_t pattern_entries_ = 0;
   std::uint64_t pattern_fingerprint_ = 0;
+  bool trimmed_for_pattern_ = false;  // the heap was trimmed before a factorisation of this pattern
   std::vector<double> scaled_values_;
 };
 
