@@ -38,6 +38,5 @@ std::shared_ptr<const BlockPattern> TermAssemblyCache::pattern(const std::shared
                       [&] { return std::make_shared<const BlockPattern>(make_block_pattern(*geometry, test, trial)); });
 }
 
-void TermAssemblyCache::forget_patterns() { patterns_.clear(); }
 
 }  // namespace pc

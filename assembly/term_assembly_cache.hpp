@@ -33,9 +33,6 @@ class TermAssemblyCache {
                                               const FESpace& test, const FESpace& trial);
   // The pattern depends on the region's elements and the spaces, not on the geometry's quadrature: terms
   // of other degrees over the region (inertia's and elasticity's) share it.
-  // Drops the cache's hold on the patterns: the terms' blocks hold those they use, and a pattern no block
-  // holds any more is freed (the cache holds them weakly anyway, so this only forgets).
-  void forget_patterns();
 
  private:
   const Mesh& mesh_;

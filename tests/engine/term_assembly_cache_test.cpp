@@ -41,6 +41,7 @@ class TermAssemblyCacheTest : public ::testing::Test {
  protected:
   std::shared_ptr<const Mesh> mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
   FESpace space{mesh, 2, 1};
+  FESpace p1_space{mesh, 1, 1};  // that no term of the tests uses
   Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(space.num_dofs(), -1.0, 2.0);
 
   // Residual and tangent values of an assembly at u.
@@ -70,12 +71,19 @@ TEST_F(TermAssemblyCacheTest, TermsOverOneRegionAndSpaceShareOneGeometryAndPatte
   // A pattern is of the region's elements and the spaces: a geometry of another degree has the same one.
   const auto held = cache.pattern(cache.geometry("all", 4), space, space);
   EXPECT_EQ(cache.pattern(cache.geometry("all", 1), space, space).get(), held.get());
-  const auto pattern = cache.pattern(cache.geometry("all", 4), space, space);
-  cache.forget_patterns();  // a pattern asked for again is made again, the same
-  const auto again = cache.pattern(cache.geometry("all", 4), space, space);
-  EXPECT_NE(again.get(), pattern.get());
-  EXPECT_EQ(again->outer, pattern->outer);
-  EXPECT_EQ(again->inner, pattern->inner);
+  // Held weakly: a pattern no one holds any more is freed, and made again, the same, when asked for.
+  std::weak_ptr<const BlockPattern> weak;
+  std::vector<int> outer, inner;
+  {
+    const auto lone = cache.pattern(cache.geometry("all", 4), space, p1_space);
+    weak = lone;
+    outer = lone->outer;
+    inner = lone->inner;
+  }
+  EXPECT_TRUE(weak.expired());
+  const auto again = cache.pattern(cache.geometry("all", 4), space, p1_space);
+  EXPECT_EQ(again->outer, outer);
+  EXPECT_EQ(again->inner, inner);
   TermAssembly bottom(term(Integration::Faces, Reaction{2.0}), "bottom", {&space}, cache);
   EXPECT_NE(&bottom.geometry(), &diffusion.geometry());
   EXPECT_EQ(&bottom.geometry().mesh(), mesh.get());
@@ -102,7 +110,6 @@ TEST_F(TermAssemblyCacheTest, AReleasedGeometryIsFreedAndMadeAgainTheSame) {
   TermAssembly diffusion(term(Integration::Cells, Diffusion{1.5}), "all", {&space}, cache);
   TermAssembly reaction(term(Integration::Cells, Reaction{0.5}), "all", {&space}, cache);
   const auto first = assembled(diffusion, u);
-  cache.forget_patterns();  // a pattern keeps its geometry (its key) alive; a model forgets them once bound
   std::weak_ptr<const RegionGeometry> held = cache.geometry("all", 4);
   diffusion.release_geometry();
   EXPECT_FALSE(held.expired()) << "the reaction still holds it";
