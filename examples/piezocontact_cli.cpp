@@ -29,8 +29,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "assembly/blas_info.hpp"
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
+#include "assembly/version.hpp"
 #include "models/scene/interrupts.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
@@ -65,7 +67,8 @@ int usage() {
                "       piezocontact check SCENE [--set key=value ...]\n"
                "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]\n"
                "       piezocontact list [--plugin LIB ...]\n"
-               "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n");
+               "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n"
+               "       piezocontact --version\n");
   return 2;
 }
 
@@ -130,9 +133,17 @@ void return_large_blocks_to_the_system() {
 #endif
 }
 
+// The library's version and the BLAS kernels this machine runs: two machines agree to the bit only when
+// both lines agree (docs/design.md, "Round-off across machines").
+int version() {
+  std::printf("piezocontact %s\nBLAS: %s\n", pc::library_version(), pc::blas_info().describe().c_str());
+  return 0;
+}
+
 int main(int argc, char** argv) {
   return_large_blocks_to_the_system();
   pc::processes::initialize(&argc, &argv);  // under mpirun; nothing on one process
+  if (argc == 2 && std::string(argv[1]) == "--version") return version();
   if (argc >= 2 && (std::string(argv[1]) == "list" || std::string(argv[1]) == "describe")) {
     try {
       return catalog(argv[1], argc, argv);

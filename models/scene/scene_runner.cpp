@@ -12,6 +12,7 @@
 #include <memory>
 
 
+#include "assembly/blas_info.hpp"
 #include "assembly/atomic_file.hpp"
 #include "assembly/blas_workspace.hpp"
 #include "assembly/error.hpp"
@@ -333,6 +334,10 @@ void write_summary(const Scene& scene, const std::string& dir, const FoundationR
   timing.set("factorizations", Json(double(r.factorizations)));
   s.set("timing", std::move(timing));
   s.set("processes", Json(double(processes::count())));
+  // The BLAS kernels that ran: another CPU's kernels give results equal to round-off, not to the bit.
+  const BlasInfo& blas = blas_info();
+  s.set("blas", Json::object({{"vendor", Json(blas.vendor)}, {"core", Json(blas.core)},
+                              {"config", Json(blas.config)}, {"library", Json(blas.library)}}));
   // What the solver of the full factorisations predicted of them (MUMPS's INFOG), when they were made.
   if (r.full_factors.entries > 0) {
     Json f = Json::object();

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "assembly/blas_info.hpp"
 #include "models/scene/json.hpp"
 #include "models/scene/scene_runner.hpp"
 #include "support/csv_table.hpp"
@@ -213,6 +214,11 @@ TEST_F(Results3D, A2DRunKeepsItsColumnsAndKeysAndDescribesItsMesh) {
   const auto [h_min, h_max] = simplex_edge_range(model().mesh());
   EXPECT_EQ(mesh.at("h_min").as_number(), h_min);
   EXPECT_EQ(mesh.at("h_max").as_number(), h_max);
+  // Which BLAS kernels rounded this run (issue 44): the same the process reports.
+  const Json blas = summary_.at("blas");
+  EXPECT_EQ(blas.at("vendor").as_string(), blas_info().vendor);
+  EXPECT_EQ(blas.at("core").as_string(), blas_info().core);
+  EXPECT_EQ(blas.at("library").as_string(), blas_info().library);
 }
 
 // A 3D grid must say which z it samples; a 2D one has no z.
