@@ -230,7 +230,15 @@ Spreads compare_runs(const fs::path& a, const fs::path& b) {
     };
     EXPECT_EQ(number(sa, "completed"), "\"completed\": true") << part;
     EXPECT_EQ(number(sa, "completed"), number(sb, "completed")) << part;
-    EXPECT_EQ(number(sa, "newton_iterations_total"), number(sb, "newton_iterations_total")) << part;
+    // The same Newton method on differently rounded arithmetic (a distributed factorisation): a step whose
+    // last residual lands within round-off of the tolerance may take one iteration more or less, no more.
+    const auto count = [&](const std::string& s, const std::string& key) {
+      const std::string text = number(s, key);
+      return text == "missing" ? -1.0 : std::stod(text.substr(key.size() + 4));
+    };
+    EXPECT_LE(std::abs(count(sa, "newton_iterations_total") - count(sb, "newton_iterations_total")),
+              count(sb, "steps"))
+        << part;
   }
   return spreads;
 }

@@ -138,7 +138,8 @@ TEST(Registry, AParameterStudyReusesOneModel) {
     ASSERT_TRUE(reused.completed && fresh.completed);
     EXPECT_NEAR(reused.uy_corner, fresh.uy_corner, 1e-12 * std::abs(fresh.uy_corner)) << phi_f;
     EXPECT_NEAR(reused.phi_center, fresh.phi_center, 1e-12 * std::abs(fresh.phi_center)) << phi_f;
-    EXPECT_EQ(reused.newton_iterations_total, fresh.newton_iterations_total) << phi_f;
+    // (Agreeing to 1e-12, not to the bit, a step may end one iteration apart on the two models.)
+    EXPECT_LE(std::abs(reused.newton_iterations_total - fresh.newton_iterations_total), fresh.steps) << phi_f;
   }
   EXPECT_EQ(sweep.newton().analyses(), analyses) << "a new symbolic analysis";
   for (int b = 0; b < int(m.bricks().size()); ++b) {
