@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages piezocontact needs; does nothing when all are present.
-# Usage: scripts/install_dependencies.sh [mpi]   (mpi: also OpenMPI and the MPI build of MUMPS)
+# Usage: scripts/install_dependencies.sh [mpi] [ccache]   (mpi: also OpenMPI and the MPI build of MUMPS;
+# ccache: also ccache, which the build uses when it is there)
 # Run as root (or with sudo available).
 set -euo pipefail
 
@@ -11,9 +12,13 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
 )
-if [ "${1:-}" = mpi ]; then
-  packages+=(libmumps-dev libopenmpi-dev openmpi-bin)
-fi
+for extra in "$@"; do
+  case "$extra" in
+    mpi) packages+=(libmumps-dev libopenmpi-dev openmpi-bin) ;;
+    ccache) packages+=(ccache) ;;
+    *) echo "install_dependencies.sh: unknown extra '$extra' (known: mpi, ccache)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
