@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <limits>
 #include <optional>
 
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
+#include "models/model_state.hpp"
 
 namespace pc {
 namespace {
@@ -79,6 +81,42 @@ Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
   if (options_.min_step <= 0) options_.min_step = o.step * 1e-6;
 }
 
+double Stepper::controlled_first_step(Model& model, TimeScheme& scheme, NewtonSolver& newton, StepperState& state) const {
+  const AdaptiveSteps& a = *options_.adaptive;
+  Checkpoint start;
+  save_model_state(model, scheme, start);
+  StepperOptions probe = options_;
+  probe.adaptive->control_first_step = false;
+  probe.adaptive->tolerance = 0.999;  // the probe judges the start itself: its second step is not rejected
+  probe.checkpoint_every = 0;
+  probe.max_wall_seconds = 0;
+  probe.resume.reset();
+  double first = std::min(options_.step, a.max_step);
+  double best = first, best_ratio = std::numeric_limits<double>::infinity();
+  // Two accepted steps: the second's estimate covers the first (backward Euler's, and BDF2's start).
+  for (int probes = 0; probes < 50; ++probes) {
+    probe.step = first;
+    probe.end = std::min(options_.end, options_.start + 2.5 * first);
+    probe.max_attempts = 2;
+    const RunSummary r = Stepper(probe).run(model, scheme, newton);
+    restore_model_state(model, scheme, start);
+    state.attempts += r.state.attempts;
+    state.newton_iterations_total += r.newton_iterations_total;
+    // Not judged (a Newton failure cut a probe's step, or the span is one step): the run's own cut-back
+    // and controller take it from here.
+    if (r.steps < 2) break;
+    const double ratio = r.time_error.max_global() / a.tolerance;
+    // A smaller step that does not lower the error has met the estimate's floor (Newton's tolerance,
+    // divided by the steps' squares in the divided difference): the best step before it is kept.
+    if (ratio >= best_ratio) break;
+    best = first;
+    best_ratio = ratio;
+    if (ratio <= 1 || first <= options_.min_step) break;
+    first = std::max(options_.min_step, first * std::clamp(a.safety * std::pow(1.0 / ratio, 0.5), a.max_cut, 0.9));
+  }
+  return best;
+}
+
 RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, const StepperCallbacks& callbacks) {
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
@@ -122,6 +160,7 @@ RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, 
       }
     }
     if (estimator) state.time_error = estimator->start(model);
+    if (o.adaptive && o.adaptive->control_first_step) state.step_size = controlled_first_step(model, scheme, newton, state);
     processes::run_agreed("the initial output", [&] {
       if (callbacks.on_output) callbacks.on_output(model, record);
     });

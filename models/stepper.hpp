@@ -53,6 +53,10 @@ struct AdaptiveSteps {
   double max_growth = 2;          // a step at most this many times the last
   double max_cut = 0.2;           // a rejected step is retried at least this large a fraction of itself
   double factorization_cost = 2;  // a new step size costs about this many steps' work
+  // The run's first steps carry no estimate of their own (too early for a divided difference): judged
+  // once the first estimate covers them, by a probe before the run, and the first step cut until their
+  // error is within the tolerance (Stepper::controlled_first_step).
+  bool control_first_step = true;
 };
 
 struct StepperOptions {
@@ -134,6 +138,13 @@ class Stepper {
   RunSummary run(Model& model, TimeScheme& scheme, NewtonSolver& newton, const StepperCallbacks& callbacks = {});
 
  private:
+  // The first step of an adaptive run, from the start's state: the steps are taken, without callbacks,
+  // until an estimate covers the first one; while its error is above the tolerance the model is put back
+  // to the start and the first step cut (by the controller's factor for a first-order error, the start
+  // being backward Euler), down to min_step. The model is left at the start. Adds the probes' attempts
+  // and Newton iterations to `state`.
+  double controlled_first_step(Model& model, TimeScheme& scheme, NewtonSolver& newton, StepperState& state) const;
+
   StepperOptions options_;
 };
 
