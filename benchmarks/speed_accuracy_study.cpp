@@ -77,6 +77,7 @@ struct Settings {
   int nx = 0, ny = 0, order = 1, steps = 0;
   std::string scheme;  // backward_euler | bdf2 | theta (with theta = 0.5)
   double c_nu = 0, tolerance = 0;
+  double adaptive = 0;  // time.adaptive's tolerance (0: uniform steps)
   std::string linear;
   std::string condensation;  // schur | columns | plain (solver.condensed = false)
 
@@ -88,6 +89,7 @@ struct Settings {
                                   "solver.linear=" + linear,
                                   "output.vtu_every=1000000"};  // the first and last VTU only
     if (scheme == "theta") o.push_back("time.theta=0.5");
+    if (adaptive > 0) o.push_back("time.adaptive=" + number(adaptive));
     if (condensation == "plain")
       o.push_back("solver.condensed=false");
     else
@@ -97,7 +99,7 @@ struct Settings {
   // One word per setting, no commas (a CSV field and a directory name once spaces become '_').
   std::string label() const {
     return std::to_string(nx) + "x" + std::to_string(ny) + " P" + std::to_string(order) + " " +
-           std::to_string(steps) + "steps " + scheme + " c_nu=" + number(c_nu) + " tol=" + number(tolerance) + " " +
+           (adaptive > 0 ? "adaptive=" + number(adaptive) : std::to_string(steps) + "steps") + " " + scheme + " c_nu=" + number(c_nu) + " tol=" + number(tolerance) + " " +
            linear + " " + condensation;
   }
   static std::string number(double x) {
@@ -175,7 +177,7 @@ std::vector<Settings> axis_settings(const std::string& axis, const Settings& bas
         const TargetErrorChoice c = choose_for_target_error(scene, {kFoundation}, false);
         std::printf("target %g: %s (pilots and choice %.2f s)\n", target, c.explanation.c_str(),
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
-        vary([&](Settings& s) { s.nx = c.nx, s.ny = c.ny, s.order = c.order, s.steps = c.steps, s.scheme = c.scheme; });
+        vary([&](Settings& s) { s.nx = c.nx, s.ny = c.ny, s.order = c.order, s.adaptive = c.tolerance, s.scheme = c.scheme; });
       } catch (const Error& e) {
         std::printf("target %g: refused: %s\n", target, e.what());
       }

@@ -547,7 +547,6 @@ Scene load_scene(const Json& json, const std::string& directory) {
               "(mesh.generator); this scene's mesh is the gmsh file '", scene.mesh_file, "'");
       require(scene.estimate_time_error, "scene: 'target_error' needs the time error estimate, which "
               "time.error_estimate = none turns off");
-      require(!scene.adaptive, "scene: 'target_error' chooses uniform steps; it cannot be combined with time.adaptive");
     }
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);

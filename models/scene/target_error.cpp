@@ -1,6 +1,7 @@
 #include "models/scene/target_error.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -15,24 +16,31 @@ namespace pc {
 namespace {
 
 constexpr double kMaxDofs = 4e6;
+constexpr double kTightening = 8;  // the time pilot's tolerance is the others' over this
 
-// The largest estimates of a pilot over its run, over the foundations run.
+std::string sig3(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+// The largest estimates of a pilot over its run, over the foundations run, its step attempts and wall.
 struct PilotResult {
-  int dofs = 0;
-  double space = 0, time = 0;
+  int dofs = 0, attempts = 0;
+  double space = 0, time = 0, seconds = 0;
 };
 
 int scaled(int n, double factor) { return n > 0 ? std::max(1, int(std::lround(n * factor))) : 0; }
 
-// A setting: the order, the scheme, the mesh (cells along each axis scaled by factor) and the steps.
-TargetErrorChoice setting(int order, const std::string& scheme, int nx, int ny, int nz, double factor, int steps) {
+// A setting: the order, the scheme, the mesh (cells along each axis scaled by factor) and the tolerance.
+TargetErrorChoice setting(int order, const std::string& scheme, int nx, int ny, int nz, double factor, double tolerance) {
   TargetErrorChoice c;
   c.order = order;
   c.scheme = scheme;
   c.nx = scaled(nx, factor);
   c.ny = scaled(ny, factor);
   c.nz = scaled(nz, factor);
-  c.steps = steps;
+  c.tolerance = tolerance;
   return c;
 }
 
@@ -54,27 +62,127 @@ PilotResult run_pilot(const Scene& scene, const std::vector<std::string>& only, 
     require(r.completed, "target error: the pilot run (", p.description(), ") of the ", f.name,
             " foundation did not complete: ", r.message);
     worst.dofs = r.ndof;
+    worst.attempts = std::max(worst.attempts, r.steps + r.rejections + r.cutbacks);
     worst.space = std::max(worst.space, r.space_error_peak());
     worst.time = std::max(worst.time, r.time_error_peak);
+    worst.seconds += r.wall_seconds;
   }
   return worst;
 }
 
 int scheme_order(const std::string& scheme) { return scheme == "bdf2" ? 2 : 1; }
 
+// A measured exponent, from two results a factor `apart` apart, and the one used: within [low, high].
+struct Rate {
+  double measured = 0, used = 0;
+};
+Rate rate_of(double coarse, double fine, double apart, double low, double high) {
+  const double measured = coarse > 0 && fine > 0 ? std::log(coarse / fine) / std::log(apart) : high;
+  return {measured, std::clamp(measured, low, high)};
+}
+
+// Per order (P1 with backward Euler, P2 with BDF2): a quarter and half the scene's cells at the pilot
+// tolerance, for the spatial rate; half the cells at a tolerance kTightening times smaller, for the time
+// error's and the step count's response to the tolerance.
+struct PilotSet {
+  Pilot coarse, fine, tight;
+  Rate space, time, steps;
+};
+
+std::vector<PilotSet> run_pilots(const Scene& scene, const std::vector<std::string>& only, double tolerance,
+                                 bool progress) {
+  std::vector<PilotSet> pilots;
+  for (const auto& [order, scheme] : {std::pair{1, "backward_euler"}, std::pair{2, "bdf2"}}) {
+    PilotSet set;
+    for (auto [pilot, scale, tol] : {std::tuple{&set.coarse, 0.25, tolerance}, std::tuple{&set.fine, 0.5, tolerance},
+                                     std::tuple{&set.tight, 0.5, tolerance / kTightening}}) {
+      pilot->setting = setting(order, scheme, scene.nx, scene.ny, scene.nz, scale, tol);
+      pilot->result = run_pilot(scene, only, pilot->setting);
+      if (progress)
+        std::printf("  target error pilot: %s: %d dofs, %d steps, space %s, time %s, %s s\n",
+                    pilot->setting.description().c_str(), pilot->result.dofs, pilot->result.attempts,
+                    sig3(pilot->result.space).c_str(), sig3(pilot->result.time).c_str(),
+                    sig3(pilot->result.seconds).c_str());
+    }
+    // Space: a singular solution gives less than the theory, a coarse pilot may suggest more. Time: the
+    // error follows the tolerance at most proportionally (the controller's aim), the steps as the local
+    // error's order (k^(q+1): tolerance^(-1/(q+1))) or faster where the transient is unresolved.
+    const int q = scheme_order(scheme);
+    set.space = rate_of(set.coarse.result.space, set.fine.result.space, 2, 0.25, order);
+    set.time = rate_of(set.fine.result.time, set.tight.result.time, kTightening, 0.25, 1);
+    set.steps = rate_of(set.tight.result.attempts, set.fine.result.attempts, kTightening, 1.0 / (q + 1), 1);
+    pilots.push_back(set);
+  }
+  return pilots;
+}
+
+std::string rates_text(const std::vector<PilotSet>& pilots) {
+  std::string text;
+  for (const PilotSet& p : pilots)
+    text += message(text.empty() ? "" : "; ", "P", p.fine.setting.order, " ", p.fine.setting.scheme, ": space rate ",
+                    sig3(p.space.measured), " (used ", sig3(p.space.used), "), time error ~ tolerance^",
+                    sig3(p.time.used), " (measured ", sig3(p.time.measured), "), steps ~ tolerance^-",
+                    sig3(p.steps.used), " (measured ", sig3(p.steps.measured), ")");
+  return text;
+}
+
+// The least predicted cost that reaches the target, and the closest to it (for the refusal).
+struct Search {
+  TargetErrorChoice best, closest;
+  double best_seconds = std::numeric_limits<double>::infinity(), closest_error = std::numeric_limits<double>::infinity();
+};
+
+void search_candidates(const PilotSet& set, int dim, double memory, double target, Search& found) {
+  const Pilot& fine = set.fine;
+  const int order = fine.setting.order;
+  for (int j = -2; j <= 10; ++j) {
+    const double factor = std::pow(2.0, j / 2.0);  // over the finer pilot's mesh, 1/2 to 32
+    const double space = fine.result.space * std::pow(factor, -set.space.used);
+    const double dofs = fine.result.dofs * std::pow(factor, dim);
+    const int cells[3] = {scaled(fine.setting.nx, factor), scaled(fine.setting.ny, factor), scaled(fine.setting.nz, factor)};
+    if (dofs > kMaxDofs || (memory > 0 && estimate_structured_run(dim, cells, order).bytes > memory)) break;
+    for (int k = -2; k <= 30; ++k) {  // tolerances from twice the pilots' down, in steps of 2^(1/2)
+      const double tolerance = fine.setting.tolerance * std::pow(2.0, -k / 2.0);
+      if (tolerance > 0.5 || tolerance < 1e-12) continue;
+      const double shrink = fine.setting.tolerance / tolerance;
+      const double time = fine.result.time * std::pow(shrink, -set.time.used);
+      const double attempts = fine.result.attempts * std::pow(shrink, set.steps.used);
+      TargetErrorChoice c = setting(order, fine.setting.scheme, fine.setting.nx, fine.setting.ny, fine.setting.nz,
+                                    factor, tolerance);
+      c.target = target;
+      c.dofs = int(dofs);
+      c.steps = int(std::lround(attempts));
+      c.predicted_space = space;
+      c.predicted_time = time;
+      c.predicted_seconds = estimate_run_seconds(dim, dofs, std::max(1, c.steps)).seconds;
+      if (space + time <= target && c.predicted_seconds < found.best_seconds) {
+        found.best = c;
+        found.best_seconds = c.predicted_seconds;
+      }
+      // The closest, for the refusal: within 5 % of the least error, the cheapest.
+      const double error = space + time;
+      if (error < 0.95 * found.closest_error ||
+          (error <= 1.05 * found.closest_error && c.predicted_seconds < found.closest.predicted_seconds)) {
+        found.closest = c;
+        found.closest_error = std::min(found.closest_error, error);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> TargetErrorChoice::overrides() const {
   std::vector<std::string> o = {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny)};
   if (nz > 0) o.push_back("mesh.nz=" + std::to_string(nz));
-  o.insert(o.end(), {"mesh.order=" + std::to_string(order), "time.scheme=" + scheme, "time.steps=" + std::to_string(steps),
-                     "output.space_error_every=1"});
+  o.insert(o.end(), {"mesh.order=" + std::to_string(order), "time.scheme=" + scheme,
+                     "time.adaptive=" + message(tolerance), "output.space_error_every=1"});
   return o;
 }
 
 std::string TargetErrorChoice::description() const {
-  return message("P", order, " on ", nx, " x ", ny, nz > 0 ? message(" x ", nz) : std::string(), " cells, ", scheme, ", ",
-                 steps, " steps");
+  return message("P", order, " on ", nx, " x ", ny, nz > 0 ? message(" x ", nz) : std::string(), " cells, ", scheme,
+                 ", adaptive ", sig3(tolerance), steps > 0 ? message(" (~", steps, " steps)") : std::string());
 }
 
 TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<std::string>& only, bool progress) {
@@ -82,97 +190,30 @@ TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<
   require(!scene.file.empty(), "target error: the pilots reload the scene from its file, and this scene has none");
   const double target = *scene.target_error;
   const int dim = scene.spec.mesh->dim();
-  const int pilot_steps = std::max(20, scene.steps / 5);
-  // Per order (P1 with backward Euler, P2 with BDF2): a quarter and half the scene's cells along each
-  // axis with pilot_steps, for the spatial rate; half the cells with twice the steps, for the temporal one.
-  struct PilotSet {
-    Pilot coarse, fine, longer;
-  };
-  std::vector<PilotSet> pilots;
-  for (const auto& [order, scheme] : {std::pair{1, "backward_euler"}, std::pair{2, "bdf2"}}) {
-    PilotSet set;
-    for (auto [pilot, scale, steps] : {std::tuple{&set.coarse, 0.25, pilot_steps}, std::tuple{&set.fine, 0.5, pilot_steps},
-                                       std::tuple{&set.longer, 0.5, 2 * pilot_steps}}) {
-      pilot->setting = setting(order, scheme, scene.nx, scene.ny, scene.nz, scale, steps);
-      pilot->result = run_pilot(scene, only, pilot->setting);
-      if (progress)
-        std::printf("  target error pilot: %s: %d dofs, space %.3g, time %.3g\n", pilot->setting.description().c_str(),
-                    pilot->result.dofs, pilot->result.space, pilot->result.time);
-    }
-    pilots.push_back(set);
-  }
-  // A rate from two estimates a factor 2 apart, kept within [0.25, the theoretical order]: a singular
-  // solution or order reduction (a stiff contact) gives less than the theory, a pilot on the coarse side
-  // may suggest more.
-  const auto rate_of = [](double coarse, double fine, int theory) {
-    const double measured = coarse > 0 && fine > 0 ? std::log2(coarse / fine) : theory;
-    return std::pair{measured, std::clamp(measured, 0.25, double(theory))};
-  };
+  const auto began = std::chrono::steady_clock::now();
+  const std::vector<PilotSet> pilots = run_pilots(scene, only, std::min(0.5, target), progress);
+  const double pilot_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
   // What a candidate may use: solver.max_memory_gib, or what the machine has (the scene's own check).
   double memory = available_memory_bytes();
   if (const auto solver = scene.json.find("solver"))
     if (const auto cap = solver->find("max_memory_gib")) memory = cap->as_positive() * 1073741824.0;
-  TargetErrorChoice best;
+  Search found;
+  found.closest.predicted_seconds = std::numeric_limits<double>::infinity();
+  for (const PilotSet& set : pilots) search_candidates(set, dim, memory, target, found);
+  const std::string pilots_text = message("pilots ", sig3(pilot_seconds), " s: ", rates_text(pilots));
+  const TargetErrorChoice& closest = found.closest;
+  require(std::isfinite(found.best_seconds), "target error ", target, ": no setting that fits in memory (and ",
+          kMaxDofs, " dofs) is predicted to reach it; the closest, ", closest.description(), ", is predicted to reach ",
+          sig3(closest.predicted_space + closest.predicted_time), " (space ", sig3(closest.predicted_space),
+          " + time ", sig3(closest.predicted_time), ") in ", sig3(closest.predicted_seconds),
+          " s. Raise the target, or the memory (solver.max_memory_gib), or run that setting with --set (",
+          pilots_text, ")");
+  TargetErrorChoice best = found.best;
   best.target = target;
-  double best_seconds = std::numeric_limits<double>::infinity();
-  TargetErrorChoice closest;  // the least predicted error, if nothing reaches the target
-  closest.predicted_seconds = std::numeric_limits<double>::infinity();
-  double closest_error = std::numeric_limits<double>::infinity();
-  std::string rates;
-  for (const PilotSet& set : pilots) {
-    const int order = set.fine.setting.order;
-    const Pilot& fine = set.fine;
-    const auto [measured_space, space_rate] = rate_of(set.coarse.result.space, fine.result.space, order);
-    rates += message(rates.empty() ? "" : "; ", "P", order, " space ", set.coarse.result.space, " -> ", fine.result.space,
-                     " (rate ", measured_space, ", used ", space_rate, ")");
-    for (const PilotSet& timed : pilots) {  // each scheme's time error, from the pilots that ran it
-      const std::string& scheme = timed.fine.setting.scheme;
-      const auto [measured_time, time_rate] =
-          rate_of(timed.fine.result.time, timed.longer.result.time, scheme_order(scheme));
-      if (order == 1)
-        rates += message("; ", scheme, " time ", timed.fine.result.time, " -> ", timed.longer.result.time, " (rate ",
-                         measured_time, ", used ", time_rate, ")");
-      for (int j = -2; j <= 10; ++j) {
-        const double factor = std::pow(2.0, j / 2.0);  // over the finer pilot's mesh, 1/2 to 32
-        const double space = fine.result.space * std::pow(factor, -space_rate);
-        const double dofs = fine.result.dofs * std::pow(factor, dim);
-        const int cells[3] = {scaled(fine.setting.nx, factor), scaled(fine.setting.ny, factor), scaled(fine.setting.nz, factor)};
-        if (dofs > kMaxDofs || (memory > 0 && estimate_structured_run(dim, cells, order).bytes > memory)) break;
-        for (int k = 0; k <= 22; ++k) {
-          // From half the pilots' steps up: the time model is not trusted far below what was measured.
-          const int steps = int(std::lround(std::max(10, pilot_steps / 2) * std::pow(2.0, k / 2.0)));
-          const double time = timed.longer.result.time * std::pow(2.0 * pilot_steps / steps, time_rate);
-          const double seconds = estimate_run_seconds(dim, dofs, steps).seconds;
-          TargetErrorChoice c = setting(order, scheme, fine.setting.nx, fine.setting.ny, fine.setting.nz, factor, steps);
-          c.target = target;
-          c.dofs = int(dofs);
-          c.predicted_space = space;
-          c.predicted_time = time;
-          c.predicted_seconds = seconds;
-          if (space + time <= target && seconds < best_seconds) {
-            best = c;
-            best_seconds = seconds;
-          }
-          // The closest, for the refusal: within 5 % of the least error, the cheapest.
-          const double error = space + time;
-          if (error < 0.95 * closest_error || (error <= 1.05 * closest_error && seconds < closest.predicted_seconds)) {
-            closest = c;
-            closest_error = std::min(closest_error, error);
-          }
-        }
-      }
-    }
-  }
-  const std::string pilots_text = message("pilots with ", pilot_steps, " and ", 2 * pilot_steps, " steps: ", rates);
-  require(std::isfinite(best_seconds), "target error ", target, ": no setting that fits in memory (and ", kMaxDofs,
-          " dofs) is predicted to reach it; the closest, ", closest.description(), ", is predicted to reach ",
-          closest.predicted_space + closest.predicted_time, " (space ", closest.predicted_space, " + time ",
-          closest.predicted_time, ") in ", closest.predicted_seconds, " s. Raise the target, or the memory ",
-          "(solver.max_memory_gib), or run that setting with --set (", pilots_text, ")");
-  best.explanation = message("chose ", best.description(), ": predicted space ", best.predicted_space, " + time ",
-                             best.predicted_time, " <= ", target, " in ", best.predicted_seconds,
-                             " s, the least predicted cost (", pilots_text, ")");
+  best.explanation = message("chose ", best.description(), ": predicted space ", sig3(best.predicted_space),
+                             " + time ", sig3(best.predicted_time), " <= ", target, " in ",
+                             sig3(best.predicted_seconds), " s, the least predicted cost (", pilots_text, ")");
   return best;
 }
 

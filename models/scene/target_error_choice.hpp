@@ -10,14 +10,15 @@ struct TargetErrorChoice {
   int order = 1;
   std::string scheme;  // a time.scheme name
   int nx = 0, ny = 0, nz = 0;
-  int steps = 0;
-  int dofs = 0;  // predicted
+  double tolerance = 0;  // of the adaptive time steps (time.adaptive), which control the time error
+  int steps = 0;         // predicted: the step attempts the tolerance takes
+  int dofs = 0;          // predicted
   double predicted_space = 0, predicted_time = 0, predicted_seconds = 0;
   std::string explanation;  // the pilots' figures, the rates and the choice, for the user
-  // The scene overrides that make the choice: mesh.nx, ny (nz), mesh.order, time.scheme, time.steps, and
-  // output.space_error_every = 1 (the spatial estimate's peak over the run, not between output steps).
+  // The scene overrides that make the choice: mesh.nx, ny (nz), mesh.order, time.scheme, time.adaptive,
+  // and output.space_error_every = 1 (the spatial estimate's peak over the run, not between output steps).
   std::vector<std::string> overrides() const;
-  std::string description() const;  // e.g. "P2 on 30 x 10 cells, bdf2, 200 steps"
+  std::string description() const;  // e.g. "P2 on 30 x 10 cells, bdf2, adaptive 0.00316 (~80 steps)"
 };
 
 }  // namespace pc
