@@ -1,4 +1,4 @@
-# Fails when a source file includes a header of a layer above its own (DESIGN.md, "Layering rule"):
+# Fails when a source file includes a header of a layer above its own (docs/design.md, "The layers"):
 #   assembly/ <- bricks/ <- models/ (core, solvers/, output/, piezo/) <- models/scene/
 # Run by the target check_layers on every build: cmake -DSOURCE_DIR=... -P CheckLayers.cmake
 set(forbidden_assembly "bricks/|models/")

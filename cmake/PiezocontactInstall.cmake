@@ -14,6 +14,7 @@ foreach(dir assembly bricks models)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/piezocontact/${dir}
     FILES_MATCHING PATTERN "*.hpp" PATTERN "gmsh_module" EXCLUDE)  # gmsh_module/: a module, no headers
 endforeach()
+include(ForwardingHeaders)
 install(EXPORT piezocontactTargets NAMESPACE piezocontact::
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/piezocontact)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/piezocontactConfig.cmake.in

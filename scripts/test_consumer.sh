@@ -13,3 +13,13 @@ cmake -S "$work/consumer" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -
   -DPIEZOCONTACT_SCENES="$PWD/scenes" >/dev/null
 cmake --build "$work/build"
 ctest --test-dir "$work/build" --output-on-failure
+
+# Code written against 0.1.0's header paths still compiles against the package, each old path saying
+# where its header went.
+cmake -S tests/consumer/old_includes -B "$work/old_includes" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+cmake --build "$work/old_includes" 2>&1 | tee "$work/old_includes.log" | tail -1
+"$work/old_includes/old_includes"
+notes=$(grep -c "moved to .* in 0.2.0; include the new path" "$work/old_includes.log" || true)
+[ "$notes" -ge 10 ] || { echo "old includes: expected a note for each of the 10 moved headers, got $notes"; exit 1; }
+echo "old includes: compiled, ran, and each moved header said where it went"
