@@ -44,8 +44,8 @@ ContactNodes contact_nodes(const FESpace& space, const std::string& face_region)
   return nodes;
 }
 
-std::vector<double> nodal_contact_pressure(const NormalPressure& normal, const FESpace& space,
-                                           const ContactNodes& nodes, const Eigen::VectorXd& argument, double t) {
+std::vector<double> pressure_at_contact_nodes(const NormalPressure& normal, const FESpace& space,
+                                              const ContactNodes& nodes, const Eigen::VectorXd& argument, double t) {
   std::vector<double> pressure;
   for (size_t i = 0; i < nodes.scalar_dofs.size(); ++i) {
     const auto r = node_vector(space, argument, nodes.scalar_dofs[i]);
@@ -82,7 +82,7 @@ std::vector<ContactState> nodal_contact_state(const std::vector<double>& pressur
 ContactStatus contact_status(const NormalPressure& normal, const FESpace& space, const ContactNodes& nodes,
                              const Eigen::VectorXd& argument, const Eigen::VectorXd& velocity, double slip_threshold,
                              double t) {
-  const std::vector<double> pressure = nodal_contact_pressure(normal, space, nodes, argument, t);
+  const std::vector<double> pressure = pressure_at_contact_nodes(normal, space, nodes, argument, t);
   const std::vector<double> slip = nodal_slip_speed(space, nodes, velocity, normal.motion(), t);
   ContactStatus status;
   status.nodes = int(pressure.size());

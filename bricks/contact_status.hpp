@@ -30,11 +30,17 @@ struct ContactStatus {
   int sticking() const { return in_contact - sliding; }
 };
 
-// Contact pressure p_nu at each node at time t, from the values of the field the normal law reads (velocity,
-// or displacement for a compliance law), in the nodes' space numbering, relative to the normal brick's
-// foundation motion.
-std::vector<double> nodal_contact_pressure(const NormalPressure& normal, const FESpace& space,
-                                           const ContactNodes& nodes, const Eigen::VectorXd& argument, double t);
+// The normal law's contact pressure p_nu at each node at time t, from the values of the field the law reads
+// (velocity, or displacement for a compliance law), in the nodes' space numbering, relative to the normal
+// brick's foundation motion.
+std::vector<double> pressure_at_contact_nodes(const NormalPressure& normal, const FESpace& space,
+                                              const ContactNodes& nodes, const Eigen::VectorXd& argument, double t);
+// The 0.2.0 name: two functions had it (the runner's own spread the values onto the mesh nodes).
+[[deprecated("renamed pressure_at_contact_nodes (bricks/contact_status.hpp)")]] inline std::vector<double>
+nodal_contact_pressure(const NormalPressure& normal, const FESpace& space, const ContactNodes& nodes,
+                       const Eigen::VectorXd& argument, double t) {
+  return pressure_at_contact_nodes(normal, space, nodes, argument, t);
+}
 // |v_tau - V_f,tau(t)| at each node: the slip relative to the foundation (motion null: at rest).
 std::vector<double> nodal_slip_speed(const FESpace& space, const ContactNodes& nodes, const Eigen::VectorXd& velocity,
                                      const FoundationMotion* motion, double t);

@@ -23,6 +23,7 @@
 #include "models/model_state.hpp"
 #include "models/output/boundary_table.hpp"
 #include "models/output/checkpoint.hpp"
+#include "models/output/contact_output_fields.hpp"
 #include "models/output/csv_log.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/scene/interrupts.hpp"
@@ -48,46 +49,11 @@ double probe(const Model& m, const PointLocator& locator, const std::string& fie
   return evaluate_at(m.space(field), m.values(field), locator, x.data())[component];
 }
 
-// Values at the contact nodes spread onto the mesh nodes (zero off the contact boundary), as VTU point data.
-std::vector<double> on_mesh_nodes(const PiezoContactModel& built, const std::vector<double>& p) {
+// The model's own normal brick's contact fields at the contact nodes, at the model's time (built.normal set).
+ContactOutputFields contact_fields_of(const PiezoContactModel& built, double slip_threshold) {
   const Model& m = *built.model;
-  std::vector<double> pressure(m.mesh().num_nodes(), 0.0);
-  if (!built.normal) return pressure;
-  const FESpace& space = m.space("v");
-  // Mesh vertices are the first dofs of each cell; a P2 space's other nodes are not mesh nodes.
-  std::vector<int> vertex_of_dof(space.num_scalar_dofs(), -1);
-  for (int c = 0; c < m.mesh().num_cells(); ++c) {
-    const auto dofs = space.cell_scalar_dofs(c);
-    const auto vertices = m.mesh().cell(c);
-    for (size_t k = 0; k < vertices.size(); ++k) vertex_of_dof[dofs[k]] = vertices[k];
-  }
-  for (size_t i = 0; i < p.size(); ++i)
-    if (const int vertex = vertex_of_dof[built.contact_nodes.scalar_dofs[i]]; vertex >= 0) pressure[vertex] = p[i];
-  return pressure;
-}
-
-// The model's own normal brick at the contact nodes, each split against its own normal, at the model's time.
-std::vector<double> contact_node_pressure(const PiezoContactModel& built) {
-  const Model& m = *built.model;
-  if (!built.normal) return {};
-  return nodal_contact_pressure(*built.normal, m.space("v"), built.contact_nodes, m.values(built.contact_argument),
-                                m.time());
-}
-
-// Contact pressure at the mesh nodes.
-std::vector<double> nodal_contact_pressure(const PiezoContactModel& built) {
-  return on_mesh_nodes(built, contact_node_pressure(built));
-}
-
-// 0 separated, 1 sticking, 2 slipping (bricks/contact_status.hpp) at the mesh nodes; slip relative to the foundation.
-std::vector<double> contact_state_on_mesh_nodes(const PiezoContactModel& built, double slip_threshold) {
-  const Model& m = *built.model;
-  if (!built.normal) return on_mesh_nodes(built, {});
-  const std::vector<double> slip =
-      nodal_slip_speed(m.space("v"), built.contact_nodes, m.values("v"), built.normal->motion(), m.time());
-  std::vector<double> state;
-  for (ContactState s : nodal_contact_state(contact_node_pressure(built), slip, slip_threshold)) state.push_back(double(s));
-  return on_mesh_nodes(built, state);
+  return contact_output_fields(*built.normal, m.space("v"), built.contact_nodes, m.values(built.contact_argument),
+                               m.values("v"), slip_threshold, m.time());
 }
 
 std::string describe_duration(double seconds) {
@@ -150,8 +116,9 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
     const FESpace& vspace = m.space("v");
     const BoundaryNodes nodes = boundary_nodes(vspace, scene.spec.contact, 0);
     const ContactNodes& contact = built.contact_nodes;
-    const std::vector<double> pressure = nodal_contact_pressure(*built.normal, vspace, contact, m.values(built.contact_argument), m.time());
-    const std::vector<double> slip = nodal_slip_speed(vspace, contact, m.values("v"), built.normal->motion(), m.time());
+    const ContactOutputFields fields = contact_fields_of(built, scene.output.slip_threshold);
+    const std::vector<double>& pressure = fields.pressure;
+    const std::vector<double>& slip = fields.slip;
     std::vector<double> phi;
     if (electric) phi = values_at_nodes(nodes, m.space("phi"), m.values("phi"), 0);
     std::vector<std::vector<double>> rows;
@@ -542,11 +509,8 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       contact_header.push_back("node_" + std::to_string(i));
     }
   }
-  auto contact_row = [&](const Model& model, double t) {
-    const std::vector<double> slip =
-        nodal_slip_speed(model.space("v"), built.contact_nodes, model.values("v"), built.normal->motion(), t);
-    const std::vector<ContactState> states =
-        nodal_contact_state(contact_node_pressure(built), slip, scene.output.slip_threshold);
+  auto contact_row = [&](double t) {  // after a step: the model's time is t
+    const std::vector<ContactState> states = contact_fields_of(built, scene.output.slip_threshold).state;
     std::vector<double> row = {t};
     for (size_t k : history_order) row.push_back(double(states[k]));
     return row;
@@ -693,7 +657,7 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       }
       require_finite_rows(when(r) + ": history.csv", history_header, {row});
       if (history) history->row(row);
-      if (contact_log) contact_log->row(contact_row(model, r.time));
+      if (contact_log) contact_log->row(contact_row(r.time));
     });
     if (run_options.after_step) run_options.after_step(r);
     // A line every progress_every steps, and at least every progress_seconds: no long silence.
@@ -725,10 +689,15 @@ FoundationRunResult FoundationRun::run(const FoundationRunOptions& run_options) 
       const SceneOutput& out = scene.output;
       VtuWriter writer(mesh);
       add_piezo_output(writer, model, {}, [&](const std::string& name) { return out.writes_vtu_field(name); });
-      if (out.writes_vtu_field("contact_pressure"))
-        writer.add_point_data("contact_pressure", 1, nodal_contact_pressure(built));
-      if (out.writes_vtu_field("contact_state"))
-        writer.add_point_data("contact_state", 1, contact_state_on_mesh_nodes(built, out.slip_threshold));
+      if (out.writes_vtu_field("contact_pressure") || out.writes_vtu_field("contact_state")) {
+        const FESpace& vspace = model.space("v");
+        const ContactOutputFields fields =
+            built.normal ? contact_fields_of(built, out.slip_threshold) : ContactOutputFields{};
+        if (out.writes_vtu_field("contact_pressure"))
+          writer.add_point_data("contact_pressure", 1, on_mesh_nodes(vspace, built.contact_nodes, fields.pressure));
+        if (out.writes_vtu_field("contact_state"))
+          writer.add_point_data("contact_state", 1, on_mesh_nodes(vspace, built.contact_nodes, fields.state));
+      }
       if (out.writes_vtu_field("space_error"))
         for (SpaceErrorField& f : space_estimate.fields)
           writer.add_cell_data("space_error_" + f.field, 1, std::move(f.cells));

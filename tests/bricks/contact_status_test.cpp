@@ -47,7 +47,7 @@ TEST(ContactNodes, ACurvedSurfaceIsSplitAlongEachNodesOwnNormal) {
   });
   NormalResponseBrick<LinearDampedResponse> normal("inner");
   normal.update(ConstantTable().set("c_nu", c_nu));
-  const std::vector<double> pressure = nodal_contact_pressure(normal, space, nodes, v, 0.0);
+  const std::vector<double> pressure = pressure_at_contact_nodes(normal, space, nodes, v, 0.0);
   const std::vector<double> slip = nodal_slip_speed(space, nodes, v, nullptr, 0.0);
   // Interior nodes: the mean of two chords' normals is exactly radial on this uniform arc. The two end
   // nodes have one chord each, whose normal is half a segment, delta = pi / (4 n), off the radius: there

@@ -165,7 +165,7 @@ TEST(DeviceClosedForms, ClampedBodyFeelsTheGapAndTheSlipOfAMovingFoundation) {
     const double scale = c_nu * v_into * end * kLength;
     EXPECT_NEAR(reaction(m, "v", "bottom", 1), -p * kLength, 1e-12 * scale) << "t = " << t;
     EXPECT_NEAR(reaction(m, "v", "bottom", 0), -friction * kLength, 1e-12 * scale) << "t = " << t;
-    for (double pressure : nodal_contact_pressure(*built.normal, m.space("v"), built.contact_nodes, m.values("u"), t))
+    for (double pressure : pressure_at_contact_nodes(*built.normal, m.space("v"), built.contact_nodes, m.values("u"), t))
       EXPECT_NEAR(pressure, p, 1e-12 * scale);
     ++checked;
   });

@@ -8,6 +8,7 @@
 
 #include "models/scene/scene.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "support/csv_table.hpp"
 #include "support/error_and_temp_dir.hpp"
 #include "support/test_helpers.hpp"
 #include "support/vtu_reader.hpp"
@@ -131,6 +132,45 @@ TEST_F(SceneVtuRun, ByDefaultAFileHoldsEveryFieldInTheListedOrder) {
     for (const char* field : {"u", "v", "phi"}) all.push_back(std::string("space_error_") + field);  // one per field
   }
   EXPECT_EQ(written, all);
+}
+
+// Three outputs read the contact law: the final table's pressure (gamma_c.csv), the contact history's last
+// row (contact_state.csv) and the last VTU file's contact_pressure and contact_state. Node by node they must
+// tell the same story: a node is separated exactly where its pressure is zero, and the VTU arrays carry the
+// table's pressures and states on the same nodes.
+TEST_F(SceneVtuRun, TheContactTableHistoryAndVtuAgreeNodeByNode) {
+  const Scene scene = load_scene_file(
+      kScene, {"mesh.nx=12", "mesh.ny=4", "time.steps=20", "output.vtu_every=20", "output.contact_history=true"});
+  SceneRunOptions options;
+  options.output_directory = directory_.string();
+  options.progress = false;
+  options.only = {"conductive"};
+  options.sweep = false;
+  ASSERT_TRUE(run_scene(scene, options));
+  const fs::path dir = directory_ / "conductive";
+  const testing::Table table = testing::read_csv(dir / "gamma_c.csv");
+  const testing::Table history = testing::read_csv(dir / "contact_state.csv");
+  ASSERT_EQ(table.rows.size(), size_t(13));
+  ASSERT_FALSE(history.rows.empty());
+  const std::vector<double>& states = history.rows.back();  // t, then one column per node in the table's order
+  ASSERT_EQ(states.size(), table.rows.size() + 1);
+  double table_pressure = 0;
+  int table_pressed = 0;
+  for (size_t i = 0; i < table.rows.size(); ++i) {
+    const double pressure = table.rows[i][size_t(table.column("contact_pressure"))];
+    EXPECT_GE(pressure, 0.0) << "node " << i;
+    EXPECT_EQ(pressure > 0, states[i + 1] != 0) << "node " << i << ": pressure " << pressure << ", state " << states[i + 1];
+    table_pressure += pressure;
+    table_pressed += pressure > 0;
+  }
+  EXPECT_GT(table_pressed, 0);  // the body is pressed at the end of its loading
+  const std::string vtu = testing::read_text(dir / "paper2d_000020.vtu");
+  double vtu_pressure = 0;
+  int vtu_pressed = 0;
+  for (double p : testing::find_array(vtu, "PointData", "contact_pressure").doubles()) vtu_pressure += p;
+  for (double s : testing::find_array(vtu, "PointData", "contact_state").doubles()) vtu_pressed += s != 0;
+  EXPECT_NEAR(vtu_pressure, table_pressure, 1e-12 * table_pressure);
+  EXPECT_EQ(vtu_pressed, table_pressed);
 }
 
 }  // namespace
