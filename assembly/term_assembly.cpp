@@ -132,6 +132,18 @@ CsrView TermAssembly::block(int k) const {
 
 void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, double time,
                             std::span<Eigen::VectorXd* const> residuals, bool tangent) {
+  check_arguments(values, residuals);
+  bool want_residual = false;
+  for (auto* r : residuals) want_residual = want_residual || r != nullptr;
+  if (tangent)
+    for (std::vector<double>& b : block_values_) std::fill(b.begin(), b.end(), 0.0);
+  if (!want_residual && !tangent) return;
+  run_element_loop(geometry(), values, time, residuals, want_residual, tangent);
+}
+
+// One value vector per field and one residual (or null) per test field, each of its space's size.
+void TermAssembly::check_arguments(std::span<const Eigen::VectorXd* const> values,
+                                   std::span<Eigen::VectorXd* const> residuals) const {
   const Term& term = *term_;
   const int n_fields = static_cast<int>(spaces_.size());
   const int n_tests = static_cast<int>(term.tests().size());
@@ -146,119 +158,128 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
   for (int t = 0; t < n_tests; ++t)
     require(residuals[t] == nullptr || residuals[t]->size() == spaces_[term.tests()[t]]->num_dofs(), "term '",
             term.name(), "': residual of '", term.fields()[term.tests()[t]].name, "' has the wrong size");
-  bool want_residual = false;
-  for (auto* r : residuals) want_residual = want_residual || r != nullptr;
-  if (tangent)
-    for (std::vector<double>& b : block_values_) std::fill(b.begin(), b.end(), 0.0);
-  if (!want_residual && !tangent) return;
+}
 
-  const RegionGeometry& geo = geometry();
+// Sizes a workspace for this term (a kept one has the sizes already: the resizes do nothing).
+void TermAssembly::prepare(Workspace& w, const RegionGeometry& geo, double time) const {
+  const int nq = geo.num_points();
+  w.data.dim = geo.mesh().dim();
+  w.data.num_points = nq;
+  w.data.time = time;
+  w.data.weights.resize(nq);
+  w.data.points.resize(nq);
+  if (geo.integration() != Integration::Cells) w.data.normals.resize(nq);
+  w.data.fields.resize(spaces_.size());
+  w.local.residual.resize(term_->tests().size());
+  w.local.tangent.resize(term_->couplings().size());
+  w.dofs.resize(spaces_.size());
+}
+
+// Element e's quadrature data and its fields' dofs, values and (on cells) physical gradients at its points.
+void TermAssembly::interpolate(int e, const RegionGeometry& geo, std::span<const Eigen::VectorXd* const> values,
+                               Workspace& w) const {
   const int dim = geo.mesh().dim();
   const int nq = geo.num_points();
   const bool cells = geo.integration() == Integration::Cells;
-  // Sizes a workspace for this term (a kept one has the sizes already: the resizes do nothing).
-  auto prepare = [&](Workspace& w) {
-    w.data.dim = dim;
-    w.data.num_points = nq;
-    w.data.time = time;
-    w.data.weights.resize(nq);
-    w.data.points.resize(nq);
-    if (!cells) w.data.normals.resize(nq);
-    w.data.fields.resize(n_fields);
-    w.local.residual.resize(n_tests);
-    w.local.tangent.resize(term.couplings().size());
-    w.dofs.resize(n_fields);
-  };
-
-  // The element's local residual and tangent (no shared state is written).
-  auto compute = [&](int e, Workspace& w) {
-    ElementData& data = w.data;
-    data.cell = geo.cell(e);
-    data.local_face = geo.local_face(e);
+  ElementData& data = w.data;
+  data.cell = geo.cell(e);
+  data.local_face = geo.local_face(e);
+  for (int q = 0; q < nq; ++q) {
+    data.weights[q] = geo.weight(e, q);
+    data.points[q] = geo.point(e, q);
+    if (!cells) data.normals[q] = geo.normal(e, q);
+  }
+  for (int f = 0; f < int(spaces_.size()); ++f) {
+    const ShapeTable& t = table(f, data.local_face);
+    ElementData::Field& field = data.fields[f];
+    const int n = static_cast<int>(t.local_dofs.size());
+    const int nc = spaces_[f]->num_components();
+    field.num_shapes = n;
+    field.num_components = nc;
+    field.N = t.N.data();
+    element_dofs(f, e, w.dofs[f]);
+    field.coefficients.resize(n * nc);
+    for (int a = 0; a < n * nc; ++a) field.coefficients[a] = (*values[f])[w.dofs[f][a]];
+    field.value.assign(nq * nc, 0.0);
+    for (int q = 0; q < nq; ++q)
+      for (int i = 0; i < n; ++i)
+        for (int c = 0; c < nc; ++c) field.value[q * nc + c] += t.N[q * n + i] * field.coefficients[i * nc + c];
+    if (!cells) continue;
+    // Physical gradients: dN = G dN_ref with G = J^{-T}.
+    field.dN.resize(nq * n * dim);
+    field.grad.assign(nq * nc * dim, 0.0);
     for (int q = 0; q < nq; ++q) {
-      data.weights[q] = geo.weight(e, q);
-      data.points[q] = geo.point(e, q);
-      if (!cells) data.normals[q] = geo.normal(e, q);
-    }
-    for (int f = 0; f < n_fields; ++f) {
-      const ShapeTable& t = table(f, data.local_face);
-      ElementData::Field& field = data.fields[f];
-      const int n = static_cast<int>(t.local_dofs.size());
-      const int nc = spaces_[f]->num_components();
-      field.num_shapes = n;
-      field.num_components = nc;
-      field.N = t.N.data();
-      element_dofs(f, e, w.dofs[f]);
-      field.coefficients.resize(n * nc);
-      for (int a = 0; a < n * nc; ++a) field.coefficients[a] = (*values[f])[w.dofs[f][a]];
-      field.value.assign(nq * nc, 0.0);
-      for (int q = 0; q < nq; ++q)
-        for (int i = 0; i < n; ++i)
-          for (int c = 0; c < nc; ++c) field.value[q * nc + c] += t.N[q * n + i] * field.coefficients[i * nc + c];
-      if (!cells) continue;
-      // Physical gradients: dN = G dN_ref with G = J^{-T}.
-      field.dN.resize(nq * n * dim);
-      field.grad.assign(nq * nc * dim, 0.0);
-      for (int q = 0; q < nq; ++q) {
-        const double* G = geo.inverse_jacobian_t(e, q);
-        for (int i = 0; i < n; ++i) {
-          const double* ref = &t.dN[(q * n + i) * dim];
-          double* phys = &field.dN[(q * n + i) * dim];
-          for (int d = 0; d < dim; ++d) {
-            double s = 0;
-            for (int k = 0; k < dim; ++k) s += G[d * dim + k] * ref[k];
-            phys[d] = s;
-          }
-          for (int c = 0; c < nc; ++c)
-            for (int d = 0; d < dim; ++d)
-              field.grad[(q * nc + c) * dim + d] += phys[d] * field.coefficients[i * nc + c];
+      const double* G = geo.inverse_jacobian_t(e, q);
+      for (int i = 0; i < n; ++i) {
+        const double* ref = &t.dN[(q * n + i) * dim];
+        double* phys = &field.dN[(q * n + i) * dim];
+        for (int d = 0; d < dim; ++d) {
+          double s = 0;
+          for (int k = 0; k < dim; ++k) s += G[d * dim + k] * ref[k];
+          phys[d] = s;
         }
+        for (int c = 0; c < nc; ++c)
+          for (int d = 0; d < dim; ++d)
+            field.grad[(q * nc + c) * dim + d] += phys[d] * field.coefficients[i * nc + c];
       }
     }
-    for (int ti = 0; ti < n_tests; ++ti) w.local.residual[ti].setZero(w.dofs[term.tests()[ti]].size());
-    if (tangent)
-      for (int k = 0; k < int(term.couplings().size()); ++k)
-        w.local.tangent[k].setZero(w.dofs[term.couplings()[k].test].size(), w.dofs[term.couplings()[k].trial].size());
-    term.assemble(data, w.local, want_residual, tangent);
-  };
+  }
+}
 
-  // Adds the element's contributions into the global residuals and blocks (in element order).
-  auto scatter = [&](const Workspace& w) {
-    for (int ti = 0; ti < n_tests; ++ti) {
-      if (residuals[ti] == nullptr) continue;
-      const std::vector<int>& rows = w.dofs[term.tests()[ti]];
-      for (int a = 0; a < int(rows.size()); ++a) (*residuals[ti])[rows[a]] += w.local.residual[ti][a];
-    }
-    if (!tangent) return;
-    for (int k = 0; k < int(term.couplings().size()); ++k) {
-      const Eigen::MatrixXd& K = w.local.tangent[k];
-      const std::vector<int>& row_dofs = w.dofs[term.couplings()[k].test];
-      const std::vector<int>& col_dofs = w.dofs[term.couplings()[k].trial];
-      const int* outer = patterns_[k]->outer.data();
-      const int* inner = patterns_[k]->inner.data();
-      double* target = block_values_[k].data();
-      // Each entry is in its row's pattern (the element made it): a binary search over the row's sorted
-      // columns finds its slot.
-      for (int r = 0; r < int(K.rows()); ++r) {
-        const int* begin = inner + outer[row_dofs[r]];
-        const int* end = inner + outer[row_dofs[r] + 1];
-        for (int c = 0; c < int(K.cols()); ++c) target[std::lower_bound(begin, end, col_dofs[c]) - inner] += K(r, c);
-      }
-    }
-  };
+// The element's local residual and tangent (no shared state is written).
+void TermAssembly::compute(int e, const RegionGeometry& geo, std::span<const Eigen::VectorXd* const> values,
+                           bool want_residual, bool tangent, Workspace& w) const {
+  const Term& term = *term_;
+  interpolate(e, geo, values, w);
+  for (int ti = 0; ti < int(term.tests().size()); ++ti) w.local.residual[ti].setZero(w.dofs[term.tests()[ti]].size());
+  if (tangent)
+    for (int k = 0; k < int(term.couplings().size()); ++k)
+      w.local.tangent[k].setZero(w.dofs[term.couplings()[k].test].size(), w.dofs[term.couplings()[k].trial].size());
+  term.assemble(w.data, w.local, want_residual, tangent);
+}
 
+// Adds the element's contributions into the global residuals and blocks (in element order).
+void TermAssembly::scatter(const Workspace& w, std::span<Eigen::VectorXd* const> residuals, bool tangent) {
+  const Term& term = *term_;
+  for (int ti = 0; ti < int(term.tests().size()); ++ti) {
+    if (residuals[ti] == nullptr) continue;
+    const std::vector<int>& rows = w.dofs[term.tests()[ti]];
+    for (int a = 0; a < int(rows.size()); ++a) (*residuals[ti])[rows[a]] += w.local.residual[ti][a];
+  }
+  if (!tangent) return;
+  for (int k = 0; k < int(term.couplings().size()); ++k) {
+    const Eigen::MatrixXd& K = w.local.tangent[k];
+    const std::vector<int>& row_dofs = w.dofs[term.couplings()[k].test];
+    const std::vector<int>& col_dofs = w.dofs[term.couplings()[k].trial];
+    const int* outer = patterns_[k]->outer.data();
+    const int* inner = patterns_[k]->inner.data();
+    double* target = block_values_[k].data();
+    // Each entry is in its row's pattern (the element made it): a binary search over the row's sorted
+    // columns finds its slot.
+    for (int r = 0; r < int(K.rows()); ++r) {
+      const int* begin = inner + outer[row_dofs[r]];
+      const int* end = inner + outer[row_dofs[r] + 1];
+      for (int c = 0; c < int(K.cols()); ++c) target[std::lower_bound(begin, end, col_dofs[c]) - inner] += K(r, c);
+    }
+  }
+}
+
+// Every element of the region computed and scattered, on one thread or in chunks on several.
+void TermAssembly::run_element_loop(const RegionGeometry& geo, std::span<const Eigen::VectorXd* const> values,
+                                    double time, std::span<Eigen::VectorXd* const> residuals, bool want_residual,
+                                    bool tangent) {
   const int n_elements = geo.num_elements();
   const int threads = n_elements >= kMinElementsForThreads ? assembly_threads() : 1;
   if (tangent) ++tangent_assemblies_;
   std::vector<Workspace> made;
   std::vector<Workspace>& workspaces = tangent_assemblies_ >= 2 ? kept_workspaces_ : made;
   workspaces.resize(threads == 1 ? 1 : std::min(kChunkElements, n_elements));
-  for (Workspace& w : workspaces) prepare(w);
+  for (Workspace& w : workspaces) prepare(w, geo, time);
   if (threads == 1) {
     Workspace& w = workspaces.front();
     for (int e = 0; e < n_elements; ++e) {
-      compute(e, w);
-      scatter(w);
+      compute(e, geo, values, want_residual, tangent, w);
+      scatter(w, residuals, tangent);
     }
   } else {
     // Chunks of elements are computed in parallel, then added in element order: the sums are those of
@@ -272,14 +293,14 @@ void TermAssembly::assemble(std::span<const Eigen::VectorXd* const> values, doub
 #endif
       for (int i = 0; i < count; ++i) {
         try {
-          compute(first + i, chunk[i]);
+          compute(first + i, geo, values, want_residual, tangent, chunk[i]);
         } catch (...) {
           failures[i] = std::current_exception();
         }
       }
       for (int i = 0; i < count; ++i)
         if (failures[i]) std::rethrow_exception(failures[i]);
-      for (int i = 0; i < count; ++i) scatter(chunk[i]);
+      for (int i = 0; i < count; ++i) scatter(chunk[i], residuals, tangent);
     }
   }
   elements_assembled_ += n_elements;

@@ -63,11 +63,23 @@ class TermAssembly {
     std::vector<double> N;        // [q * n + i]
     std::vector<double> dN;       // reference gradients [(q * n + i) * dim + d]; cells only
   };
+  struct Workspace;
   TermAssembly(std::shared_ptr<const Term> term, std::shared_ptr<const RegionGeometry> geometry,
                std::vector<const FESpace*> spaces, TermAssemblyCache* cache);
   const ShapeTable& table(int field, int local_face) const;
   void element_dofs(int field, int element, std::vector<int>& dofs) const;
   void build_blocks(TermAssemblyCache* cache);
+  // The phases of assemble().
+  void check_arguments(std::span<const Eigen::VectorXd* const> values,
+                       std::span<Eigen::VectorXd* const> residuals) const;
+  void prepare(Workspace& w, const RegionGeometry& geo, double time) const;
+  void interpolate(int e, const RegionGeometry& geo, std::span<const Eigen::VectorXd* const> values,
+                   Workspace& w) const;
+  void compute(int e, const RegionGeometry& geo, std::span<const Eigen::VectorXd* const> values, bool want_residual,
+               bool tangent, Workspace& w) const;
+  void scatter(const Workspace& w, std::span<Eigen::VectorXd* const> residuals, bool tangent);
+  void run_element_loop(const RegionGeometry& geo, std::span<const Eigen::VectorXd* const> values, double time,
+                        std::span<Eigen::VectorXd* const> residuals, bool want_residual, bool tangent);
 
   std::shared_ptr<const Term> term_;
   mutable std::shared_ptr<const RegionGeometry> geometry_;  // null after release_geometry()

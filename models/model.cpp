@@ -5,12 +5,13 @@
 #include <cmath>
 #include <exception>
 #include <set>
+#include <span>
 #include <utility>
 
 #include "assembly/cell_partition.hpp"
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
-#include "assembly/threads.hpp"
+#include "models/linear_brick_cache.hpp"
 
 namespace pc {
 
@@ -43,13 +44,8 @@ struct Model::BrickState {
   std::vector<BoundTerm> terms;
   std::map<std::string, std::uint64_t> constant_versions;  // as last read by update()
   std::int64_t retired_elements = 0;                       // element loops of replaced assemblies
-  bool tangent_valid = false;                              // linear bricks
-  bool r0_valid = false;
-  double r0_time = 0;
-  std::map<std::string, std::uint64_t> r0_data_versions;
-  std::map<std::string, Eigen::VectorXd> r0;  // per test unknown
-  std::map<std::string, bool> r0_zero;        // per test unknown: every entry of r0 is zero
-  std::set<std::string> tested;               // the unknowns the terms test, as bound
+  LinearBrickCache cache;                                  // linear bricks
+  std::set<std::string> tested;                            // the unknowns the terms test, as bound
 };
 
 struct Model::System {
@@ -72,10 +68,28 @@ struct Model::System {
   long nonlinear_slots = 0;
 };
 
-namespace {
+// Distributed, an element loop that throws on one process must not leave the others waiting in the
+// sums that follow it: each loop's failure is kept, the processes agree on it before the brick's sums,
+// and all of them throw (the failing one its own error, the others its message).
+struct Model::ElementLoops {
+  std::exception_ptr failure;
 
-// Products with fewer entries stay on one thread (starting threads would cost more than they save).
-constexpr long kMinProductEntriesForThreads = 20000;
+  template <class Run>
+  void run(Run&& loop) {
+    if (!processes::distributed()) return loop();
+    if (failure) return;
+    try {
+      loop();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  }
+  void agree_on_failure(const Brick& brick) const {
+    processes::agree_on_failure(failure, "brick '" + brick.name() + "'");
+  }
+};
+
+namespace {
 
 std::string join(const std::vector<std::string>& names) {
   std::string out;
@@ -83,11 +97,9 @@ std::string join(const std::vector<std::string>& names) {
   return out.empty() ? "none" : out;
 }
 
-// One value per unknown, in the layout's order (its blocks').
-std::vector<double> in_layout_order(const DofLayout& l, const std::map<std::string, double>& per_unknown) {
-  std::vector<double> values;
-  for (int f = 0; f < l.num_fields(); ++f) values.push_back(per_unknown.at(l.field_name(f)));
-  return values;
+// An unknown's free numbering in the layout (-1 on an eliminated dof).
+std::span<const int> global_of(const DofLayout& l, const std::string& unknown) {
+  return l.global_indices(l.field_index(unknown));
 }
 
 }  // namespace
@@ -319,15 +331,35 @@ int Model::add_brick(std::shared_ptr<Brick> brick) {
     restricted_[own.name] = own;
   }
   check_brick(*brick);
-  bricks_.push_back(std::move(brick));
-  brick_states_.push_back(std::make_unique<BrickState>());
-  for (const std::string& name : bricks_.back()->data()) {
+  auto state = std::make_unique<BrickState>();
+  for (const std::string& name : brick->data()) {
     const auto it = constants_.find(name);
-    require(it != constants_.end(), "Model: brick '", bricks_.back()->name(), "' reads the constant '", name,
+    require(it != constants_.end(), "Model: brick '", brick->name(), "' reads the constant '", name,
             "', which the model does not have (set it before adding the brick)");
-    brick_states_.back()->constant_versions[name] = it->second.second;
+    state->constant_versions[name] = it->second.second;
   }
+  claim_parameters(*brick, state->constant_versions);
+  bricks_.push_back(std::move(brick));
+  brick_states_.push_back(std::move(state));
   return static_cast<int>(bricks_.size()) - 1;
+}
+
+// A constant a brick reads is owned by the first brick to read it (a law's parameters by the law's brick).
+// Another brick reading it as its owner read it is no declaration (a friction brick reads its normal
+// brick's c_nu); one that finds it set to a new value since declares it anew, which would change the
+// owner's parameter behind its back: a second owner is refused, naming both. A value set again unchanged
+// changes nothing, and counts as no new declaration.
+void Model::claim_parameters(const Brick& brick, const std::map<std::string, std::uint64_t>& versions) {
+  for (const auto& [name, version] : versions) {
+    const auto owner = parameter_owners_.find(name);
+    if (owner != parameter_owners_.end() && owner->second.brick != brick.name() && owner->second.version != version)
+      fail("Model: parameter '", name, "' is declared by brick '", owner->second.brick, "' and by brick '",
+           brick.name(), "': the second would change the first's value (give one of them a name of its own)");
+  }
+  for (const auto& [name, version] : versions) {
+    auto [owner, inserted] = parameter_owners_.try_emplace(name, ParameterOwner{brick.name(), version});
+    if (owner->second.brick == brick.name()) owner->second.version = version;
+  }
 }
 
 void Model::bind_brick(int index) {
@@ -370,8 +402,7 @@ void Model::bind_brick(int index) {
   state.terms = std::move(bound);
   state.tested.clear();
   for (const BoundTerm& bt : state.terms) state.tested.insert(bt.test_unknowns.begin(), bt.test_unknowns.end());
-  state.tangent_valid = false;
-  state.r0_valid = false;
+  state.cache.invalidate();
 }
 
 void Model::finalize() {
@@ -605,16 +636,9 @@ bool Model::assemble_nonlinear_rows(Eigen::VectorXd& rows) {
   // tangent blocks are what nonlinear_part() sums.
   if (nonlinear_rows_at_ != std::pair{clock_, time_}) {
     for (const std::string& u : unknown_names_) nonlinear_scratch_.at(u).setZero();
-    for (int b = 0; b < int(bricks_.size()); ++b) {
-      if (bricks_[b]->linear()) continue;
-      for (BoundTerm& bt : brick_states_[b]->terms) {
-        std::vector<const Eigen::VectorXd*> values;
-        for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
-        std::vector<Eigen::VectorXd*> outputs;
-        for (const std::string& u : bt.test_unknowns) outputs.push_back(&nonlinear_scratch_.at(u));
-        bt.assembly->assemble(values, time_, outputs, true);
-      }
-    }
+    ElementLoops loops;  // on one process, each loop runs as it is
+    for (int b = 0; b < int(bricks_.size()); ++b)
+      if (!bricks_[b]->linear()) run_nonlinear_loops(b, nonlinear_scratch_, true, loops);
     s.jacobian_current = false;
     nonlinear_rows_at_ = {clock_, time_};
   }
@@ -656,7 +680,7 @@ bool Model::residual_derivative(const std::map<std::string, Eigen::VectorXd>& ch
       for (const std::string& name : bt.field_names) {
         if (!moved.count(name)) continue;
         const bool coupled = std::count(bt.trial_fields.begin(), bt.trial_fields.end(), name) > 0;
-        if (!bricks_[b]->linear() || !state.tangent_valid || !coupled) return false;
+        if (!bricks_[b]->linear() || !state.cache.tangent_valid || !coupled) return false;
       }
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
         const auto direction = moved.find(bt.trial_fields[k]);
@@ -739,8 +763,7 @@ void Model::refresh_brick(int index) {
   for (size_t t = 0; same_terms && t < terms.size(); ++t)
     same_terms = &state.terms[t].assembly->term() == terms[t].term.get();
   if (same_terms) {
-    state.tangent_valid = false;
-    state.r0_valid = false;
+    state.cache.invalidate();
   } else {
     bind_brick(index);
   }
@@ -754,87 +777,44 @@ void Model::refresh_linear_sum(System& s) {
 
 void Model::assemble(bool tangent) {
   System& s = system();
-  std::map<std::string, Eigen::VectorXd> brick_residual;  // one brick's contribution, to measure it
   nonlinear_rows_at_ = {~std::uint64_t(0), 0.0};  // the kept rows stand again only once this assembly ends
+  std::map<std::string, Eigen::VectorXd> brick_residual = start_assembly();  // one brick's, to measure it
+  size_kept_residuals();
+  ElementLoops loops;
+  for (int b = 0; b < int(bricks_.size()); ++b) {
+    refresh_brick(b);
+    if (!bricks_[b]->linear()) {
+      add_nonlinear_brick(b, s, brick_residual, tangent, loops);
+      continue;
+    }
+    assemble_linear_tangent(b, loops);
+    refresh_r0(b, loops);
+    add_linear_pieces(b, s, brick_residual);
+  }
+  if (tangent) refresh_tangent(s);
+  // A brick's own unknown is measured at least by the scale of its `like` field (residual_scaling.hpp).
+  for (const auto& [name, own] : restricted_) scaling_.at_least_that_of(name, own.like);
+  residual_ = Eigen::VectorXd::Zero(s.layout.size());
+  for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
+}
+
+// Zeroes the field residuals, the nonlinear bricks' sums and the scales; returns a zero vector per unknown.
+std::map<std::string, Eigen::VectorXd> Model::start_assembly() {
+  std::map<std::string, Eigen::VectorXd> zeros;
   for (const std::string& u : unknown_names_) {
     field_residuals_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
     nonlinear_scratch_[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
-    brick_residual[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
-    residual_scales_[u] = 0;
-    round_off_scales_[u] = 0;
+    zeros[u] = Eigen::VectorXd::Zero(space(u).num_dofs());
   }
-  // The largest single brick contribution on the free dofs (Newton's reference), and its gross size, the
-  // residual's round-off floor over machine epsilon (round_off_scales).
-  const auto free_norm = [&](const std::string& u, auto&& row_value) {
-    const auto global = s.layout.global_indices(s.layout.field_index(u));
-    double sum = 0;
-    for (int d = 0; d < int(global.size()); ++d)
-      if (global[d] >= 0) {
-        const double value = row_value(d);
-        sum += value * value;
-      }
-    return std::sqrt(sum);
-  };
-  // A piece of block u with net size `net` and gross size `gross` (>= net for a linear piece's |K| |x|).
-  auto record_scales = [&](const std::string& u, double net, double gross) {
-    residual_scales_[u] = std::max(residual_scales_[u], net);
-    round_off_scales_[u] = std::max({round_off_scales_[u], net, gross});
-  };
-  auto measure = [&](const std::string& u, const Eigen::VectorXd& r, double gross) {
-    record_scales(u, free_norm(u, [&](int d) { return r[d]; }), gross);
-  };
-  // A linear piece K x is measured by the norm of (|K| |x|)_i = sum_j |K_ij| |x_j| as well: the computed
-  // product is off by at most a few eps (|K| |x|)_i in row i however much its terms cancel (Oettli and
-  // Prager's componentwise bound), while its net size K x vanishes where they balance exactly (a uniform
-  // piezoelectric stress has no net force on an interior node), which leaves a net scale that is itself
-  // round-off. One pass over K gives the product (added into `out`) and both norms: the residual is
-  // bandwidth-bound, and K is its largest operand.
-  auto add_measured_product = [&](const std::string& u, const CsrView& K, const Eigen::VectorXd& x,
-                                  Eigen::VectorXd& out) {
-    const auto global = s.layout.global_indices(s.layout.field_index(u));
-    const int* start = K.outerIndexPtr();
-    const int* column = K.innerIndexPtr();
-    const double* value = K.valuePtr();
-    const int rows = int(K.rows());
-    // Rows in parallel (each is its own sum), their norms then summed in row order: bitwise the same on
-    // any number of threads.
-    product_rows_.resize(rows);
-    gross_rows_.resize(rows);
-    const int threads = K.nonZeros() >= kMinProductEntriesForThreads ? assembly_threads() : 1;
-    const bool shares = processes::distributed();
-#ifdef _OPENMP
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-#endif
-    for (int r = 0; r < rows; ++r) {
-      double row = 0, row_gross = 0;
-      for (int k = start[r]; k < start[r + 1]; ++k) {
-        const double term = value[k] * x[column[k]];
-        row += term;
-        row_gross += std::abs(term);
-      }
-      if (!shares) out[r] += row;
-      product_rows_[r] = row;
-      gross_rows_[r] = row_gross;
-    }
-    // Distributed, K is this process's share: the rows are summed over the processes (a row's gross size
-    // then sums each share's, an upper bound of the undivided |K| |x|), then added.
-    if (shares) {
-      processes::sum(product_rows_);
-      processes::sum(gross_rows_);
-      for (int r = 0; r < rows; ++r) out[r] += product_rows_[r];
-    }
-    double net = 0, gross = 0;
-    for (int r = 0; r < rows; ++r)
-      if (global[r] >= 0) {
-        net += product_rows_[r] * product_rows_[r];
-        gross += gross_rows_[r] * gross_rows_[r];
-      }
-    record_scales(u, std::sqrt(net), std::sqrt(gross));
-  };
-  // A kept brick's residual for an unknown it tests is swapped in below at every assembly. One it does not
-  // test (a set that changes only when its terms are bound again, which zeroes them) is held empty, and
-  // brick_residual() gives the unknown's one zero vector for it: the energy books keep every brick, and a
-  // zero vector per brick and untested unknown was 2 MB at the paper's 240 x 80.
+  scaling_.reset(unknown_names_);
+  return zeros;
+}
+
+// A kept brick's residual for an unknown it tests is swapped in by add_brick_share() at every assembly. One
+// it does not test (a set that changes only when its terms are bound again, which zeroes them) is held
+// empty, and brick_residual() gives the unknown's one zero vector for it: the energy books keep every brick,
+// and a zero vector per brick and untested unknown was 2 MB at the paper's 240 x 80.
+void Model::size_kept_residuals() {
   for (auto& [b, kept] : kept_residuals_) {
     const std::set<std::string>& tested = brick_states_[b]->tested;
     for (const std::string& u : unknown_names_) {
@@ -844,169 +824,161 @@ void Model::assemble(bool tangent) {
         zero = Eigen::VectorXd::Zero(space(u).num_dofs());
     }
   }
-  // One brick's contribution: measured and added to the field's residual in one pass (the residual is
-  // bandwidth-bound), then kept by swapping it with the kept vector, whose old values are cleared.
-  auto measure_and_add = [&](const std::string& u, int b) {
-    Eigen::VectorXd& r = brick_residual.at(u);
-    Eigen::VectorXd& field_residual = field_residuals_.at(u);
-    const auto global = s.layout.global_indices(s.layout.field_index(u));
-    double sum = 0;
-    for (int d = 0; d < int(global.size()); ++d) {
-      if (global[d] >= 0) sum += r[d] * r[d];
-      field_residual[d] += r[d];
-    }
-    record_scales(u, std::sqrt(sum), 0);
-    if (const auto kept = kept_residuals_.find(b); kept != kept_residuals_.end()) kept->second.at(u).swap(r);
-    r.setZero();
-  };
+}
 
-  // Distributed, an element loop that throws on one process must not leave the others waiting in the
-  // sums that follow it: each loop's failure is kept, the processes agree on it before the brick's sums,
-  // and all of them throw (the failing one its own error, the others its message).
-  std::exception_ptr failure;
-  auto element_loop = [&](auto&& run) {
-    if (!processes::distributed()) return run();
-    if (failure) return;
-    try {
-      run();
-    } catch (...) {
-      failure = std::current_exception();
-    }
-  };
-  auto agree_on_failure = [&](const Brick& brick) { processes::agree_on_failure(failure, "brick '" + brick.name() + "'"); };
+// The current values of a term's fields, in its order.
+std::vector<const Eigen::VectorXd*> Model::term_values(const BoundTerm& bt) const {
+  std::vector<const Eigen::VectorXd*> values;
+  for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
+  return values;
+}
 
-  for (int b = 0; b < int(bricks_.size()); ++b) {
-    refresh_brick(b);
-    BrickState& state = *brick_states_[b];
-    const Brick& brick = *bricks_[b];
-    std::set<std::string> touched;
-    for (BoundTerm& bt : state.terms) {
-      std::vector<const Eigen::VectorXd*> values;
-      for (const std::string& name : bt.field_names) values.push_back(&this->values(name));
-      std::vector<Eigen::VectorXd*> outputs;
-      if (!brick.linear()) {
-        for (const std::string& u : bt.test_unknowns) {
-          outputs.push_back(&brick_residual.at(u));
-          touched.insert(u);
-        }
-        element_loop([&] { bt.assembly->assemble(values, time_, outputs, tangent); });
-        continue;
-      }
-      outputs.assign(bt.test_unknowns.size(), nullptr);
-      if (!state.tangent_valid) {
-        const auto start = std::chrono::steady_clock::now();
-        element_loop([&] { bt.assembly->assemble(values, time_, outputs, true); });
-        jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      }
-    }
-    agree_on_failure(brick);
-    if (!brick.linear()) {
-      for (const std::string& u : touched) {
-        Eigen::VectorXd& share = brick_residual.at(u);  // distributed: of this process's elements
-        processes::sum({share.data(), size_t(share.size())});
-        nonlinear_scratch_.at(u) += share;  // assemble_nonlinear_rows() gives these at the same values
-        measure_and_add(u, b);
-      }
-      continue;
-    }
-    if (!state.tangent_valid) {
-      state.tangent_valid = true;
-      ++linear_version_;
-    }
-
-    // R0: the residual with every coupled field at zero (sources, and terms of uncoupled data fields).
-    bool r0_current = state.r0_valid && (!brick.time_dependent() || state.r0_time == time_);
-    for (const auto& [name, seen] : state.r0_data_versions) r0_current = r0_current && field(name).version == seen;
-    if (!r0_current) {
-      state.r0.clear();
-      state.r0_data_versions.clear();
-      for (BoundTerm& bt : state.terms) {
-        std::map<std::string, Eigen::VectorXd> zeros;
-        std::vector<const Eigen::VectorXd*> values;
-        for (const std::string& name : bt.field_names) {
-          const bool coupled = std::count(bt.trial_fields.begin(), bt.trial_fields.end(), name) > 0;
-          if (!coupled) {
-            values.push_back(&this->values(name));
-            continue;
-          }
-          zeros[name] = Eigen::VectorXd::Zero(space(name).num_dofs());
-          values.push_back(&zeros[name]);
-        }
-        std::vector<Eigen::VectorXd*> outputs;
-        for (const std::string& u : bt.test_unknowns) {
-          auto [it, inserted] = state.r0.try_emplace(u, Eigen::VectorXd::Zero(space(u).num_dofs()));
-          outputs.push_back(&it->second);
-        }
-        element_loop([&] { bt.assembly->assemble(values, time_, outputs, false); });
-        for (const std::string& name : bt.uncoupled_data) state.r0_data_versions[name] = field(name).version;
-      }
-      agree_on_failure(brick);
-      state.r0_zero.clear();
-      for (auto& [u, r0] : state.r0) {
-        processes::sum({r0.data(), size_t(r0.size())});
-        state.r0_zero[u] = (r0.array() == 0.0).all();
-      }
-      state.r0_valid = true;
-      state.r0_time = time_;
-    }
-    // Its blocks and R0 stand: the geometry is not needed until the brick's data change (then the term
-    // makes it again, and keeps it).
-    for (BoundTerm& bt : state.terms) bt.assembly->release_geometry();
-    // The pieces K_k x_k and R0 are measured one by one: they may cancel within the brick (k_e phi
-    // against k_e phi_f), and round-off is relative to each of them. A brick's share of an unknown that is
-    // a single product (R0 zero, no other coupling, the brick not kept) is added straight into the field's
-    // residual, measured by the product itself: the same bits as its sum through the brick's zeroed
-    // vector, without that vector's three passes (most bricks' shares are one product).
-    const bool kept = kept_residuals_.count(b) > 0;
-    std::map<std::string, int> pieces;
-    for (const auto& [u, r0] : state.r0)
-      if (kept || !state.r0_zero.at(u)) ++pieces[u];
-    for (const BoundTerm& bt : state.terms)
-      for (size_t k = 0; k < bt.trial_fields.size(); ++k) ++pieces[bt.field_names[bt.assembly->term().couplings()[k].test]];
-    for (const auto& [u, r0] : state.r0) {
-      if (!kept && state.r0_zero.at(u)) continue;
-      measure(u, r0, 0);
-      brick_residual.at(u) += r0;
+// A nonlinear brick's element loops at the current values: its residual added into `into` (per unknown it
+// tests, which are returned) and, if asked, its tangent blocks.
+std::set<std::string> Model::run_nonlinear_loops(int index, std::map<std::string, Eigen::VectorXd>& into,
+                                                 bool tangent, ElementLoops& loops) {
+  std::set<std::string> touched;
+  for (BoundTerm& bt : brick_states_[index]->terms) {
+    const std::vector<const Eigen::VectorXd*> values = term_values(bt);
+    std::vector<Eigen::VectorXd*> outputs;
+    for (const std::string& u : bt.test_unknowns) {
+      outputs.push_back(&into.at(u));
       touched.insert(u);
     }
-    for (const BoundTerm& bt : state.terms)
-      for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
-        const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
-        const CsrView K = bt.assembly->block(int(k));
-        const bool alone = !kept && pieces.at(u) == 1;
-        add_measured_product(u, K, this->values(bt.trial_fields[k]), alone ? field_residuals_.at(u) : brick_residual.at(u));
-        if (!alone) touched.insert(u);
-      }
-    for (const std::string& u : touched) measure_and_add(u, b);
+    loops.run([&] { bt.assembly->assemble(values, time_, outputs, tangent); });
   }
+  return touched;
+}
 
-  if (tangent) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::vector<double> factors = affine_factors();
-    if (s.linear_stamp != linear_version_ || s.linear_factors != factors) {
-      refresh_linear_sum(s);
-      s.linear_stamp = linear_version_;
-      s.linear_factors = factors;
-      s.linear_sum = ++linear_sums_;
+// A nonlinear brick's contribution, summed over the processes, into the nonlinear sums and the residual.
+void Model::add_nonlinear_brick(int index, const System& s, std::map<std::string, Eigen::VectorXd>& brick_residual,
+                                bool tangent, ElementLoops& loops) {
+  const std::set<std::string> touched = run_nonlinear_loops(index, brick_residual, tangent, loops);
+  loops.agree_on_failure(*bricks_[index]);
+  for (const std::string& u : touched) {
+    Eigen::VectorXd& share = brick_residual.at(u);  // distributed: of this process's elements
+    processes::sum({share.data(), size_t(share.size())});
+    nonlinear_scratch_.at(u) += share;  // assemble_nonlinear_rows() gives these at the same values
+    add_brick_share(s, u, index, share);
+  }
+}
+
+// A linear brick's tangent blocks, assembled again only when its constants changed since.
+void Model::assemble_linear_tangent(int index, ElementLoops& loops) {
+  LinearBrickCache& cache = brick_states_[index]->cache;
+  if (!cache.tangent_valid)
+    for (BoundTerm& bt : brick_states_[index]->terms) {
+      const std::vector<const Eigen::VectorXd*> values = term_values(bt);
+      const std::vector<Eigen::VectorXd*> outputs(bt.test_unknowns.size(), nullptr);
+      const auto start = std::chrono::steady_clock::now();
+      loops.run([&] { bt.assembly->assemble(values, time_, outputs, true); });
+      jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    s.jacobian_current = false;  // formed by jacobian() when asked for
-    nonlinear_rows_at_ = {clock_, time_};
-    jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  loops.agree_on_failure(*bricks_[index]);
+  if (!cache.tangent_valid) {
+    cache.tangent_valid = true;
+    ++linear_version_;
   }
+}
 
-  // A brick's own unknown (a multiplier) starts balanced at zero with no force in it, which would leave
-  // Newton no scale to measure it by: its residual is in the units of its `like` field's, and takes that
-  // block's scale when its own is smaller.
-  for (const auto& [name, own] : restricted_)
-    residual_scales_[name] = std::max(residual_scales_[name], residual_scales_[own.like]);
-  residual_ = Eigen::VectorXd::Zero(s.layout.size());
-  for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
+// A linear brick's R0, assembled again when the time (a time-dependent brick's) or a datum it reads changed.
+void Model::refresh_r0(int index, ElementLoops& loops) {
+  const Brick& brick = *bricks_[index];
+  BrickState& state = *brick_states_[index];
+  LinearBrickCache& cache = state.cache;
+  if (cache.r0_current(brick.time_dependent(), time_, [&](const std::string& name) { return field(name).version; }))
+    return;
+  cache.clear_r0();
+  for (BoundTerm& bt : state.terms) {
+    std::map<std::string, Eigen::VectorXd> zeros;
+    std::vector<const Eigen::VectorXd*> values;
+    for (const std::string& name : bt.field_names) {
+      const bool coupled = std::count(bt.trial_fields.begin(), bt.trial_fields.end(), name) > 0;
+      if (!coupled) {
+        values.push_back(&this->values(name));
+        continue;
+      }
+      zeros[name] = Eigen::VectorXd::Zero(space(name).num_dofs());
+      values.push_back(&zeros[name]);
+    }
+    std::vector<Eigen::VectorXd*> outputs;
+    for (const std::string& u : bt.test_unknowns) {
+      auto [it, inserted] = cache.r0.try_emplace(u, Eigen::VectorXd::Zero(space(u).num_dofs()));
+      outputs.push_back(&it->second);
+    }
+    loops.run([&] { bt.assembly->assemble(values, time_, outputs, false); });
+    for (const std::string& name : bt.uncoupled_data) cache.r0_data_versions[name] = field(name).version;
+  }
+  loops.agree_on_failure(brick);
+  cache.finish_r0(time_);
+}
+
+// A linear brick's residual, its blocks times the fields plus R0, into the field residuals.
+void Model::add_linear_pieces(int index, const System& s, std::map<std::string, Eigen::VectorXd>& brick_residual) {
+  BrickState& state = *brick_states_[index];
+  const LinearBrickCache& cache = state.cache;
+  // Its blocks and R0 stand: the geometry is not needed until the brick's data change (then the term
+  // makes it again, and keeps it).
+  for (BoundTerm& bt : state.terms) bt.assembly->release_geometry();
+  // The pieces K_k x_k and R0 are measured one by one: they may cancel within the brick (k_e phi
+  // against k_e phi_f), and round-off is relative to each of them. A brick's share of an unknown that is
+  // a single product (R0 zero, no other coupling, the brick not kept) is added straight into the field's
+  // residual, measured by the product itself: the same bits as its sum through the brick's zeroed
+  // vector, without that vector's three passes (most bricks' shares are one product).
+  const bool kept = kept_residuals_.count(index) > 0;
+  std::map<std::string, int> pieces;
+  for (const auto& [u, r0] : cache.r0)
+    if (kept || !cache.r0_zero.at(u)) ++pieces[u];
+  for (const BoundTerm& bt : state.terms)
+    for (size_t k = 0; k < bt.trial_fields.size(); ++k) ++pieces[bt.field_names[bt.assembly->term().couplings()[k].test]];
+  std::set<std::string> touched;
+  for (const auto& [u, r0] : cache.r0) {
+    if (!kept && cache.r0_zero.at(u)) continue;
+    scaling_.measure(u, r0, global_of(s.layout, u), 0);
+    brick_residual.at(u) += r0;
+    touched.insert(u);
+  }
+  for (const BoundTerm& bt : state.terms)
+    for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
+      const std::string& u = bt.field_names[bt.assembly->term().couplings()[k].test];
+      const CsrView K = bt.assembly->block(int(k));
+      const bool alone = !kept && pieces.at(u) == 1;
+      scaling_.add_measured_product(u, K, this->values(bt.trial_fields[k]), global_of(s.layout, u),
+                                    alone ? field_residuals_.at(u) : brick_residual.at(u));
+      if (!alone) touched.insert(u);
+    }
+  for (const std::string& u : touched) add_brick_share(s, u, index, brick_residual.at(u));
+}
+
+// One brick's contribution to u: measured and added to the field's residual in one pass (the residual is
+// bandwidth-bound), then kept by swapping it with the kept vector, whose old values are cleared.
+void Model::add_brick_share(const System& s, const std::string& u, int index, Eigen::VectorXd& share) {
+  scaling_.add_measured(u, share, global_of(s.layout, u), field_residuals_.at(u));
+  if (const auto kept = kept_residuals_.find(index); kept != kept_residuals_.end()) kept->second.at(u).swap(share);
+  share.setZero();
+}
+
+// The linear bricks' sum with the scheme's factors, made again when a block or a factor changed; the
+// Jacobian is formed from it when asked for.
+void Model::refresh_tangent(System& s) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<double> factors = affine_factors();
+  if (s.linear_stamp != linear_version_ || s.linear_factors != factors) {
+    refresh_linear_sum(s);
+    s.linear_stamp = linear_version_;
+    s.linear_factors = factors;
+    s.linear_sum = ++linear_sums_;
+  }
+  s.jacobian_current = false;  // formed by jacobian() when asked for
+  nonlinear_rows_at_ = {clock_, time_};
+  jacobian_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 Model::ResidualSnapshot Model::take_residual_snapshot() {
   require(!kept_residuals_in_snapshot_, "Model: take_residual_snapshot() while another snapshot holds the kept residuals");
   kept_residuals_in_snapshot_ = true;
-  return {residual_, field_residuals_, std::exchange(kept_residuals_, {}), residual_scales_, round_off_scales_};
+  return {residual_, field_residuals_, std::exchange(kept_residuals_, {}), scaling_.residual_by_unknown(),
+          scaling_.round_off_by_unknown()};
 }
 
 void Model::restore_residual(ResidualSnapshot snapshot) {
@@ -1016,8 +988,7 @@ void Model::restore_residual(ResidualSnapshot snapshot) {
   field_residuals_ = std::move(snapshot.field_residuals);
   kept_residuals_ = std::move(snapshot.kept_residuals);
   kept_residuals_in_snapshot_ = false;
-  residual_scales_ = std::move(snapshot.residual_scales);
-  round_off_scales_ = std::move(snapshot.round_off_scales);
+  scaling_.restore(std::move(snapshot.residual_scales), std::move(snapshot.round_off_scales));
 }
 
 std::vector<ProblemBlock> Model::blocks() const {
@@ -1031,8 +1002,8 @@ std::vector<ProblemBlock> Model::blocks() const {
   return blocks;
 }
 
-std::vector<double> Model::residual_scales() const { return in_layout_order(layout(), residual_scales_); }
-std::vector<double> Model::round_off_scales() const { return in_layout_order(layout(), round_off_scales_); }
+std::vector<double> Model::residual_scales() const { return scaling_.residual_scales(layout()); }
+std::vector<double> Model::round_off_scales() const { return scaling_.round_off_scales(layout()); }
 
 Eigen::VectorXd Model::free_values() const {
   const DofLayout& l = layout();
@@ -1072,10 +1043,7 @@ std::uint64_t Model::linear_jacobian_version() { return system().linear_sum; }
 const std::vector<int>& Model::nonlinear_dofs() { return system().nonlinear_dofs; }
 
 void Model::invalidate_caches() {
-  for (auto& state : brick_states_) {
-    state->tangent_valid = false;
-    state->r0_valid = false;
-  }
+  for (auto& state : brick_states_) state->cache.invalidate();
   ++linear_version_;
 }
 

@@ -19,6 +19,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,7 @@
 #include "assembly/system_matrix.hpp"
 #include "assembly/term_assembly.hpp"
 #include "bricks/brick.hpp"
+#include "models/residual_scaling.hpp"
 #include "models/solvers/nonlinear_problem.hpp"
 
 namespace pc {
@@ -87,6 +89,11 @@ class Model : public DataView, public NonlinearProblem {
   // ---- bricks -----------------------------------------------------------------------------------
   // Checks that every field, datum and region the brick names exists and that it differentiates
   // only unknowns and affine fields. Returns the brick's index.
+  // A constant belongs to the first brick that reads it (a law's parameters to its brick): a brick that
+  // finds one set to a new value since its owner read it would change the owner's parameter too (a
+  // foundation law or a plugin brick declaring c_nu), and is refused naming both bricks. Reading it as it
+  // stands (a friction brick reads its normal brick's c_nu), the owner itself, or setting it again to the
+  // value it has are accepted.
   int add_brick(std::shared_ptr<Brick> brick);
   const std::vector<std::shared_ptr<Brick>>& bricks() const { return bricks_; }
   // Binds every term to its region (pattern, geometry), applies the Dirichlet bricks and refuses a
@@ -196,10 +203,17 @@ class Model : public DataView, public NonlinearProblem {
   struct BoundTerm;
   struct BrickState;
   struct System;
+  struct ElementLoops;
+  // The brick that declared a constant it reads (the first to read it), and the constant's version then.
+  struct ParameterOwner {
+    std::string brick;
+    std::uint64_t version = 0;
+  };
 
   Field& field(const std::string& name);
   const Field& field(const std::string& name) const;
   void check_brick(const Brick& brick) const;
+  void claim_parameters(const Brick& brick, const std::map<std::string, std::uint64_t>& versions);
   void collect_uniform_values();  // the uniform-value regions' dofs, merged into disjoint groups
   void bind_brick(int index);
   System& system();
@@ -209,6 +223,19 @@ class Model : public DataView, public NonlinearProblem {
   template <class Add>
   void for_each_block(const System& s, bool linear, Add&& add) const;
   void require_factors_of_last_tangent(const System& s, const char* what) const;
+  // The phases of assemble() (and, for a nonlinear brick's element loops, of assemble_nonlinear_rows()).
+  std::map<std::string, Eigen::VectorXd> start_assembly();
+  void size_kept_residuals();
+  std::vector<const Eigen::VectorXd*> term_values(const BoundTerm& bt) const;
+  std::set<std::string> run_nonlinear_loops(int index, std::map<std::string, Eigen::VectorXd>& into, bool tangent,
+                                            ElementLoops& loops);
+  void add_nonlinear_brick(int index, const System& s, std::map<std::string, Eigen::VectorXd>& brick_residual,
+                           bool tangent, ElementLoops& loops);
+  void assemble_linear_tangent(int index, ElementLoops& loops);
+  void refresh_r0(int index, ElementLoops& loops);
+  void add_linear_pieces(int index, const System& s, std::map<std::string, Eigen::VectorXd>& brick_residual);
+  void add_brick_share(const System& s, const std::string& u, int index, Eigen::VectorXd& share);
+  void refresh_tangent(System& s);
   std::vector<double> affine_factors() const;
 
   std::shared_ptr<const Mesh> mesh_;
@@ -231,9 +258,8 @@ class Model : public DataView, public NonlinearProblem {
   std::map<int, std::map<std::string, Eigen::VectorXd>> kept_residuals_;  // per kept brick, per unknown
   std::map<std::string, Eigen::VectorXd> zero_residuals_;  // a kept brick's for an unknown it does not test
   bool kept_residuals_in_snapshot_ = false;  // take_residual_snapshot() holds them
-  std::map<std::string, double> residual_scales_;
-  std::map<std::string, double> round_off_scales_;
-  std::vector<double> product_rows_, gross_rows_;  // scratch of the residual's products, per row
+  ResidualScaling scaling_;  // of the last assembly
+  std::map<std::string, ParameterOwner> parameter_owners_;  // per constant a brick reads
   // Per unknown, the nonlinear bricks' residual at the last assemble(true) or assemble_nonlinear_rows(), and
   // the values' version (clock_) and time it is of.
   std::map<std::string, Eigen::VectorXd> nonlinear_scratch_;

@@ -1,6 +1,6 @@
 // The Model's contract: caching of linear bricks (a new step size or a changed datum re-runs only what it
 // must), cached and forced assembly agree, a linear model converges in one Newton iteration, and bad
-// input is refused with a message naming the field, region or datum.
+// input is refused with a message naming the field, region or datum, and a parameter is one brick's.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -10,9 +10,12 @@
 
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
+#include "bricks/boundary_dashpot_brick.hpp"
 #include "bricks/dirichlet_brick.hpp"
 #include "bricks/elasticity_brick.hpp"
+#include "bricks/friction_brick.hpp"
 #include "bricks/inertia_brick.hpp"
+#include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/normal_laws.hpp"
 #include "bricks/normal_response_brick.hpp"
 #include "bricks/permittivity_brick.hpp"
@@ -392,6 +395,46 @@ TEST(Model, RejectsBadInputNamingWhatIsWrong) {
     m->add_brick(std::make_shared<ViscosityBrick>());
     expect_error([&] { m->finalize(); }, "'phi'");
   }
+}
+
+// A model with v on a square and a damped normal response on its bottom, which declares c_nu.
+std::unique_ptr<Model> model_with_normal_response() {
+  auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Triangle));
+  auto m = std::make_unique<Model>(mesh);
+  m->add_unknown("v", std::make_shared<const FESpace>(mesh, 1, 2));
+  m->set_constants(law_values(LinearDampedResponse{1e3}));
+  m->add_brick(std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom"));
+  return m;
+}
+
+TEST(Model, RefusesAParameterDeclaredByASecondBrickNamingBoth) {
+  // A second law (a foundation's, a plugin brick's) declaring c_nu with its own value would change the
+  // normal response's c_nu behind its back.
+  auto m = model_with_normal_response();
+  m->set_constant("c_nu", 5.0);
+  EXPECT_THAT([&] { m->add_brick(std::make_shared<BoundaryDashpotBrick>("top", "c_nu")); },
+              ::testing::ThrowsMessage<Error>(::testing::AllOf(
+                  HasSubstr("parameter 'c_nu'"), HasSubstr("brick 'normal response on bottom'"),
+                  HasSubstr("brick 'boundary dashpot (c_nu) on top'"))));
+  EXPECT_EQ(m->bricks().size(), 1u) << "the refused brick is not in the model";
+}
+
+TEST(Model, AcceptsParametersOfDistinctNamesAndReadersOfAnotherBricksParameter) {
+  auto m = model_with_normal_response();
+  const auto normal = std::dynamic_pointer_cast<const NormalPressure>(m->bricks().front());
+  ASSERT_NE(normal, nullptr);
+  // Distinct names from two owners.
+  m->set_constant("c_b", 2.0);
+  EXPECT_NO_THROW(m->add_brick(std::make_shared<BoundaryDashpotBrick>("top")));
+  // A friction brick reads its normal brick's c_nu as it stands: no declaration of it.
+  m->set_constants(law_values(RegularizedCoulomb{0.3, 1e-3}));
+  EXPECT_NO_THROW(m->add_brick(std::make_shared<FrictionBrick<RegularizedCoulomb>>("bottom", normal)));
+  // Its owner declaring it again, and another brick setting it to the value it has, are accepted.
+  m->set_constant("c_nu", 7e3);
+  EXPECT_NO_THROW(m->add_brick(std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom")));
+  m->set_constant("c_nu", 7e3);
+  EXPECT_NO_THROW(m->add_brick(std::make_shared<BoundaryDashpotBrick>("left", "c_nu")));
+  EXPECT_EQ(m->bricks().size(), 5u);
 }
 
 }  // namespace
