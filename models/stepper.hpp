@@ -144,6 +144,8 @@ class Stepper {
   // being backward Euler), down to min_step. The model is left at the start. Adds the probes' attempts
   // and Newton iterations to `state`.
   double controlled_first_step(Model& model, TimeScheme& scheme, NewtonSolver& newton, StepperState& state) const;
+  // One call of run(): its record of the step in progress and its phases (stepper.cpp).
+  struct Run;
 
   StepperOptions options_;
 };

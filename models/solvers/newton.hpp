@@ -152,6 +152,8 @@ class NewtonSolver {
   // The problem reduced to its contact dofs at its current (assembled) iterate, where contact_newton and
   // the schur path apply; null otherwise.
   std::unique_ptr<ReducedContactSystem> reduce_to_contact(NonlinearProblem& problem, NewtonReport& report);
+  // One call of solve(): its report so far, its convergence test and its phases (newton.cpp).
+  struct Run;
 
   NewtonOptions options_;
   std::function<void(const NewtonReport&)> on_iteration_;
