@@ -84,6 +84,16 @@ TEST(SceneVtuKeys, BadFieldsAreRefusedNamingTheKeyAndTheValue) {
 
 class SceneVtuRun : public testing::TemporaryDirectoryTest {};
 
+// The conductive foundation alone, no sweep, quiet, into out.
+bool run_conductive(const Scene& scene, const fs::path& out) {
+  SceneRunOptions options;
+  options.output_directory = out.string();
+  options.progress = false;
+  options.only = {"conductive"};
+  options.sweep = false;
+  return run_scene(scene, options);
+}
+
 TEST_F(SceneVtuRun, ARunWritesItsSeriesInTheFormatAndWithTheFieldsTheSceneNames) {
   for (const std::string& format : vtu_format_names()) {
     SCOPED_TRACE(format);
@@ -91,12 +101,7 @@ TEST_F(SceneVtuRun, ARunWritesItsSeriesInTheFormatAndWithTheFieldsTheSceneNames)
     const Scene scene = load_scene_file(
         kScene, {"mesh.nx=6", "mesh.ny=2", "time.steps=4", "output.vtu_every=2", "output.vtu_format=" + format,
                  "output.vtu_fields=[\"contact_pressure\", \"phi\", \"von_mises\"]"});
-    SceneRunOptions options;
-    options.output_directory = out.string();
-    options.progress = false;
-    options.only = {"conductive"};
-    options.sweep = false;
-    ASSERT_TRUE(run_scene(scene, options));
+    ASSERT_TRUE(run_conductive(scene, out));
     // The collection lists steps 0, 2 and 4, and each file holds just the named fields.
     const std::string pvd = testing::read_text(out / "conductive" / "paper2d.pvd");
     for (const char* step : {"paper2d_000000.vtu", "paper2d_000002.vtu", "paper2d_000004.vtu"}) {
@@ -114,12 +119,7 @@ TEST_F(SceneVtuRun, ARunWritesItsSeriesInTheFormatAndWithTheFieldsTheSceneNames)
 
 TEST_F(SceneVtuRun, ByDefaultAFileHoldsEveryFieldInTheListedOrder) {
   const Scene scene = load_scene_file(kScene, {"mesh.nx=6", "mesh.ny=2", "time.steps=2", "output.vtu_every=2"});
-  SceneRunOptions options;
-  options.output_directory = directory_.string();
-  options.progress = false;
-  options.only = {"conductive"};
-  options.sweep = false;
-  ASSERT_TRUE(run_scene(scene, options));
+  ASSERT_TRUE(run_conductive(scene, directory_));
   const std::string vtu = testing::read_text(directory_ / "conductive" / "paper2d_000002.vtu");
   std::vector<std::string> written = testing::array_names(vtu, "PointData");
   for (const std::string& name : testing::array_names(vtu, "CellData")) written.push_back(name);
@@ -141,12 +141,7 @@ TEST_F(SceneVtuRun, ByDefaultAFileHoldsEveryFieldInTheListedOrder) {
 TEST_F(SceneVtuRun, TheContactTableHistoryAndVtuAgreeNodeByNode) {
   const Scene scene = load_scene_file(
       kScene, {"mesh.nx=12", "mesh.ny=4", "time.steps=20", "output.vtu_every=20", "output.contact_history=true"});
-  SceneRunOptions options;
-  options.output_directory = directory_.string();
-  options.progress = false;
-  options.only = {"conductive"};
-  options.sweep = false;
-  ASSERT_TRUE(run_scene(scene, options));
+  ASSERT_TRUE(run_conductive(scene, directory_));
   const fs::path dir = directory_ / "conductive";
   const testing::Table table = testing::read_csv(dir / "gamma_c.csv");
   const testing::Table history = testing::read_csv(dir / "contact_state.csv");
@@ -159,7 +154,8 @@ TEST_F(SceneVtuRun, TheContactTableHistoryAndVtuAgreeNodeByNode) {
   for (size_t i = 0; i < table.rows.size(); ++i) {
     const double pressure = table.rows[i][size_t(table.column("contact_pressure"))];
     EXPECT_GE(pressure, 0.0) << "node " << i;
-    EXPECT_EQ(pressure > 0, states[i + 1] != 0) << "node " << i << ": pressure " << pressure << ", state " << states[i + 1];
+    EXPECT_EQ(pressure > 0, states[i + 1] != 0)
+        << "node " << i << ": pressure " << pressure << ", state " << states[i + 1];
     table_pressure += pressure;
     table_pressed += pressure > 0;
   }
