@@ -28,8 +28,7 @@ namespace {
 std::atomic<long> forwarded{0};
 
 // The BLAS's own routine: the next definition after this library's.
-template <class Function>
-Function next_definition(const char* name) {
+template <class Function> Function next_definition(const char* name) {
   void* symbol = dlsym(RTLD_NEXT, name);
   if (symbol == nullptr) {
     std::fprintf(stderr, "piezocontact: no BLAS routine %s after the library's own (dlsym: %s)\n", name, dlerror());

@@ -22,8 +22,9 @@ void reserve_blas_workspace() {
     constexpr std::size_t kBufferBytes = (std::size_t(128) << 20) + (std::size_t(64) << 10);
     void* probe = std::malloc(kBufferBytes);
     if (probe == nullptr)
-      throw OutOfMemory("out of memory while reserving the BLAS's work buffer (128 MiB), before the model is built: "
-                        "free memory, or raise the process's limit (ulimit -v)");
+      throw OutOfMemory(
+          "out of memory while reserving the BLAS's work buffer (128 MiB), before the model is built: "
+          "free memory, or raise the process's limit (ulimit -v)");
     std::free(probe);
     // Large enough that no small-matrix shortcut of the BLAS skips its buffer: OpenBLAS 0.3.21 takes one
     // below 100^3 multiply-adds on CPUs with its small-matrix kernels (AVX-512), and a 64^3 product

@@ -59,8 +59,7 @@ void vertex_functions(Shape shape, const double* xi, double* N, double* dN) {
 
 double determinant(int dim, const double* J) {
   if (dim == 2) return J[0] * J[3] - J[1] * J[2];
-  return J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) +
-         J[2] * (J[3] * J[7] - J[4] * J[6]);
+  return J[0] * (J[4] * J[8] - J[5] * J[7]) - J[1] * (J[3] * J[8] - J[5] * J[6]) + J[2] * (J[3] * J[7] - J[4] * J[6]);
 }
 
 // Solves J d = r by Cramer's rule (dim <= 3, det precomputed and non-zero).

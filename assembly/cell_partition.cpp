@@ -32,8 +32,8 @@ std::vector<int> partition_cells(const Mesh& mesh, int parts) {
                                 options, &cut, cell_part.data(), node_part.data());
     if (status == METIS_OK) break;
   }
-  require(status == METIS_OK, "partition_cells: METIS failed with status ", status, " on ", cells, " cells, ",
-          parts, " parts");
+  require(status == METIS_OK, "partition_cells: METIS failed with status ", status, " on ", cells, " cells, ", parts,
+          " parts");
   std::vector<int> owner(cell_part.begin(), cell_part.end());
   std::vector<int> sizes(size_t(parts), 0);
   for (int p : owner) ++sizes[size_t(p)];

@@ -22,10 +22,9 @@ int DofLayout::add_field(const std::string& name, int num_dofs, const std::vecto
     if (group.empty()) continue;
     const int smallest = *std::min_element(group.begin(), group.end());
     for (int d : group) {
-      require(d >= 0 && d < num_dofs, "DofLayout: tied dof ", d, " of field '", name, "' out of range [0, ",
-              num_dofs, ")");
-      require(global[d] != kConstrained, "DofLayout: dof ", d, " of field '", name,
-              "' is both constrained and tied");
+      require(d >= 0 && d < num_dofs, "DofLayout: tied dof ", d, " of field '", name, "' out of range [0, ", num_dofs,
+              ")");
+      require(global[d] != kConstrained, "DofLayout: dof ", d, " of field '", name, "' is both constrained and tied");
       require(leader[d] < 0, "DofLayout: dof ", d, " of field '", name, "' is in two tied groups");
       leader[d] = smallest;
     }

@@ -7,8 +7,7 @@
 
 namespace pc {
 
-template <int N>
-struct Dual {
+template <int N> struct Dual {
   double v = 0;
   std::array<double, N> d{};
 
@@ -20,8 +19,16 @@ struct Dual {
     return x;
   }
 
-  Dual& operator+=(const Dual& b) { v += b.v; for (int i = 0; i < N; ++i) d[i] += b.d[i]; return *this; }
-  Dual& operator-=(const Dual& b) { v -= b.v; for (int i = 0; i < N; ++i) d[i] -= b.d[i]; return *this; }
+  Dual& operator+=(const Dual& b) {
+    v += b.v;
+    for (int i = 0; i < N; ++i) d[i] += b.d[i];
+    return *this;
+  }
+  Dual& operator-=(const Dual& b) {
+    v -= b.v;
+    for (int i = 0; i < N; ++i) d[i] -= b.d[i];
+    return *this;
+  }
   Dual& operator*=(const Dual& b) {
     for (int i = 0; i < N; ++i) d[i] = d[i] * b.v + v * b.d[i];
     v *= b.v;
@@ -42,15 +49,32 @@ template <int N> Dual<N> operator+(Dual<N> a, const Dual<N>& b) { return a += b;
 template <int N> Dual<N> operator-(Dual<N> a, const Dual<N>& b) { return a -= b; }
 template <int N> Dual<N> operator*(Dual<N> a, const Dual<N>& b) { return a *= b; }
 template <int N> Dual<N> operator/(Dual<N> a, const Dual<N>& b) { return a /= b; }
-template <int N> Dual<N> operator+(Dual<N> a, double b) { a.v += b; return a; }
-template <int N> Dual<N> operator+(double a, Dual<N> b) { b.v += a; return b; }
-template <int N> Dual<N> operator-(Dual<N> a, double b) { a.v -= b; return a; }
+template <int N> Dual<N> operator+(Dual<N> a, double b) {
+  a.v += b;
+  return a;
+}
+template <int N> Dual<N> operator+(double a, Dual<N> b) {
+  b.v += a;
+  return b;
+}
+template <int N> Dual<N> operator-(Dual<N> a, double b) {
+  a.v -= b;
+  return a;
+}
 template <int N> Dual<N> operator-(double a, const Dual<N>& b) { return Dual<N>(a) -= b; }
-template <int N> Dual<N> operator*(Dual<N> a, double b) { a.v *= b; for (double& x : a.d) x *= b; return a; }
+template <int N> Dual<N> operator*(Dual<N> a, double b) {
+  a.v *= b;
+  for (double& x : a.d) x *= b;
+  return a;
+}
 template <int N> Dual<N> operator*(double a, Dual<N> b) { return b * a; }
 template <int N> Dual<N> operator/(Dual<N> a, double b) { return a * (1.0 / b); }
 template <int N> Dual<N> operator/(double a, const Dual<N>& b) { return Dual<N>(a) /= b; }
-template <int N> Dual<N> operator-(Dual<N> a) { a.v = -a.v; for (double& x : a.d) x = -x; return a; }
+template <int N> Dual<N> operator-(Dual<N> a) {
+  a.v = -a.v;
+  for (double& x : a.d) x = -x;
+  return a;
+}
 template <int N> Dual<N> operator+(const Dual<N>& a) { return a; }
 
 // Comparisons look at values only (branches in kernels select a smooth piece).
@@ -84,7 +108,10 @@ template <int N> Dual<N> sqrt(const Dual<N>& a) {
   const double s = std::sqrt(a.v);
   return dual_detail::chain(a, s, s > 0 ? 0.5 / s : 0.0);
 }
-template <int N> Dual<N> exp(const Dual<N>& a) { const double e = std::exp(a.v); return dual_detail::chain(a, e, e); }
+template <int N> Dual<N> exp(const Dual<N>& a) {
+  const double e = std::exp(a.v);
+  return dual_detail::chain(a, e, e);
+}
 template <int N> Dual<N> log(const Dual<N>& a) { return dual_detail::chain(a, std::log(a.v), 1.0 / a.v); }
 template <int N> Dual<N> sin(const Dual<N>& a) { return dual_detail::chain(a, std::sin(a.v), std::cos(a.v)); }
 template <int N> Dual<N> cos(const Dual<N>& a) { return dual_detail::chain(a, std::cos(a.v), -std::sin(a.v)); }
@@ -94,7 +121,9 @@ template <int N> Dual<N> tanh(const Dual<N>& a) {
 }
 template <int N> Dual<N> atan(const Dual<N>& a) { return dual_detail::chain(a, std::atan(a.v), 1 / (1 + a.v * a.v)); }
 // |a|: the derivative at 0 is taken as 0 (the subgradient of least norm).
-template <int N> Dual<N> abs(const Dual<N>& a) { return dual_detail::chain(a, std::abs(a.v), a.v > 0 ? 1.0 : (a.v < 0 ? -1.0 : 0.0)); }
+template <int N> Dual<N> abs(const Dual<N>& a) {
+  return dual_detail::chain(a, std::abs(a.v), a.v > 0 ? 1.0 : (a.v < 0 ? -1.0 : 0.0));
+}
 // a^p for a real exponent; at a = 0 the derivative is 0 for p > 1 (and p * a^(p-1) otherwise).
 template <int N> Dual<N> pow(const Dual<N>& a, double p) {
   const double f = std::pow(a.v, p);

@@ -26,22 +26,17 @@ class OutOfMemory : public std::bad_alloc {
 };
 
 // Concatenates anything streamable into one message: fail("cell ", c, " is inverted (det J = ", d, ")").
-template <class... Parts>
-std::string message(const Parts&... parts) {
+template <class... Parts> std::string message(const Parts&... parts) {
   std::ostringstream out;
   out.precision(10);
   (out << ... << parts);
   return out.str();
 }
 
-template <class... Parts>
-[[noreturn]] void fail(const Parts&... parts) {
-  throw Error(message(parts...));
-}
+template <class... Parts> [[noreturn]] void fail(const Parts&... parts) { throw Error(message(parts...)); }
 
 // Throws with the message when the condition is false; the message is only built on failure.
-template <class... Parts>
-void require(bool condition, const Parts&... parts) {
+template <class... Parts> void require(bool condition, const Parts&... parts) {
   if (!condition) fail(parts...);
 }
 

@@ -32,9 +32,9 @@ EntityKey entity_key(const Mesh& mesh, int cell, DofEntity entity) {
 
 }  // namespace
 
-FESpace::FESpace(std::shared_ptr<const Mesh> mesh, int order, int num_components,
-                 const std::string& cell_region)
-    : mesh_(std::move(mesh)), element_(&ReferenceElement::get(mesh_->cell_shape(), order)),
+FESpace::FESpace(std::shared_ptr<const Mesh> mesh, int order, int num_components, const std::string& cell_region)
+    : mesh_(std::move(mesh)),
+      element_(&ReferenceElement::get(mesh_->cell_shape(), order)),
       num_components_(num_components) {
   require(num_components >= 1 && num_components <= 3, "FESpace: num_components must be 1, 2 or 3, got ",
           num_components);
@@ -119,8 +119,7 @@ Eigen::VectorXd FESpace::interpolate(const std::function<void(const double* x, d
   return coefficients;
 }
 
-void FESpace::evaluate_in_cell(const Eigen::VectorXd& coefficients, int cell, const double* xi,
-                               double* out) const {
+void FESpace::evaluate_in_cell(const Eigen::VectorXd& coefficients, int cell, const double* xi, double* out) const {
   require(coefficients.size() == num_dofs(), "FESpace: coefficient vector has ", coefficients.size(),
           " entries, the space has ", num_dofs(), " dofs");
   double N[27];

@@ -19,8 +19,7 @@ class FESpace {
  public:
   // order 1 or 2 (P1/P2 on simplices, Q1/Q2 on quadrilaterals and hexahedra). An empty cell_region
   // means the whole mesh.
-  FESpace(std::shared_ptr<const Mesh> mesh, int order, int num_components,
-          const std::string& cell_region = "");
+  FESpace(std::shared_ptr<const Mesh> mesh, int order, int num_components, const std::string& cell_region = "");
 
   const Mesh& mesh() const { return *mesh_; }
   std::shared_ptr<const Mesh> mesh_ptr() const { return mesh_; }
@@ -57,7 +56,7 @@ class FESpace {
   const ReferenceElement* element_;
   int num_components_;
   int num_scalar_dofs_ = 0;
-  std::vector<int> cell_offset_;       // into cell_dofs_, -1 outside the region
+  std::vector<int> cell_offset_;  // into cell_dofs_, -1 outside the region
   std::vector<int> cell_dofs_;
   std::vector<std::array<double, 3>> dof_points_;
 };

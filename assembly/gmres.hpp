@@ -21,8 +21,8 @@ struct GmresOptions {
 
 struct GmresResult {
   Eigen::VectorXd x;
-  int iterations = 0;              // preconditioner applications (and products with A, plus one per restart)
-  double relative_residual = 0;    // ||b - A x|| / ||b||, recomputed from x at the end
+  int iterations = 0;            // preconditioner applications (and products with A, plus one per restart)
+  double relative_residual = 0;  // ||b - A x|| / ||b||, recomputed from x at the end
   bool converged = false;
 };
 

@@ -23,8 +23,8 @@ struct GmshOptions {
 // the mesh as a binary .msh file that gmsh itself wrote, which this process reads.
 //
 // Throws when the file does not exist, gmsh cannot read it, it holds no cells, mixes cell shapes, or
-// has second-order geometry, or when meshing a script ends early or exceeds a budget. Each call initializes and finalizes gmsh itself: do not call it while the
-// caller's own code holds gmsh initialized.
+// has second-order geometry, or when meshing a script ends early or exceeds a budget. Each call initializes and
+// finalizes gmsh itself: do not call it while the caller's own code holds gmsh initialized.
 Mesh import_gmsh(const std::string& path, const GmshOptions& options = {});
 
 }  // namespace pc

@@ -51,12 +51,11 @@ void SolverBase::analyze(const CsrMatrix& matrix) {
 void SolverBase::factorize(const CsrMatrix& matrix) {
   require(analyzed_, name(), ": factorize() needs a successful analyze() first");
   require(matrix.rows() == matrix_.rows() && matrix.cols() == matrix_.cols(), name(), ": factorize() got a ",
-          matrix.rows(), " x ", matrix.cols(), " matrix but analyze() a ", matrix_.rows(), " x ",
-          matrix_.cols(), " one");
+          matrix.rows(), " x ", matrix.cols(), " matrix but analyze() a ", matrix_.rows(), " x ", matrix_.cols(),
+          " one");
   require_compressed(name(), matrix);
-  require(matrix.nonZeros() == matrix_.nonZeros(), name(), ": factorize() got a matrix with ",
-          matrix.nonZeros(), " stored entries but analyze() one with ", matrix_.nonZeros(),
-          "; call analyze() again for a new pattern");
+  require(matrix.nonZeros() == matrix_.nonZeros(), name(), ": factorize() got a matrix with ", matrix.nonZeros(),
+          " stored entries but analyze() one with ", matrix_.nonZeros(), "; call analyze() again for a new pattern");
   const int differing_row = first_differing_row(matrix, matrix_);
   require(differing_row < 0, name(), ": factorize() got the size and entry count given to analyze() but ",
           "another pattern (from row ", differing_row, "); call analyze() again for a new pattern");

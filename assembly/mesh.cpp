@@ -75,38 +75,38 @@ constexpr double kGaussLow = 0.5 - 0.28867513459481288225;  // 1/2 - 1/(2 sqrt 3
 constexpr double kGaussHigh = 0.5 + 0.28867513459481288225;
 
 void check_cell_index(const Mesh& mesh, int c) {
-  require(c >= 0 && c < mesh.num_cells(), "cell ", c, " does not exist (the mesh has ", mesh.num_cells(),
-          " cells)");
+  require(c >= 0 && c < mesh.num_cells(), "cell ", c, " does not exist (the mesh has ", mesh.num_cells(), " cells)");
 }
 
 void check_face(const Mesh& mesh, FaceRef f) {
-  require(f.cell >= 0 && f.cell < mesh.num_cells() && f.local_face >= 0 &&
-              f.local_face < num_faces(mesh.cell_shape()),
-          "face (cell ", f.cell, ", local face ", f.local_face, ") does not exist (the mesh has ",
-          mesh.num_cells(), " cells of ", num_faces(mesh.cell_shape()), " faces)");
+  require(f.cell >= 0 && f.cell < mesh.num_cells() && f.local_face >= 0 && f.local_face < num_faces(mesh.cell_shape()),
+          "face (cell ", f.cell, ", local face ", f.local_face, ") does not exist (the mesh has ", mesh.num_cells(),
+          " cells of ", num_faces(mesh.cell_shape()), " faces)");
 }
 
 void check_new_region(const Mesh& mesh, const std::string& name, bool empty) {
   require(!name.empty(), "a region name must not be empty");
   if (mesh.has_region(name))
-    fail("region '", name, "' already exists (a ",
-         mesh.region_kind(name) == RegionKind::Cells ? "cell" : "face", " region)");
+    fail("region '", name, "' already exists (a ", mesh.region_kind(name) == RegionKind::Cells ? "cell" : "face",
+         " region)");
   require(!empty, "region '", name, "' is empty");
 }
 
 }  // namespace
 
 Mesh::Mesh(int dim, Shape cell_shape, std::vector<double> coordinates, std::vector<int> connectivity)
-    : dim_(dim), cell_shape_(cell_shape), vertices_per_cell_(num_vertices(cell_shape)),
-      coordinates_(std::move(coordinates)), connectivity_(std::move(connectivity)) {
+    : dim_(dim),
+      cell_shape_(cell_shape),
+      vertices_per_cell_(num_vertices(cell_shape)),
+      coordinates_(std::move(coordinates)),
+      connectivity_(std::move(connectivity)) {
   require(dim == 2 || dim == 3, "Mesh: dim must be 2 or 3, got ", dim);
   require(dimension(cell_shape) == dim, "Mesh: ", to_string(cell_shape), " cells have dimension ",
           dimension(cell_shape), " but the mesh has dim ", dim);
   require(coordinates_.size() % dim == 0, "Mesh: the number of coordinates (", coordinates_.size(),
           ") is not a multiple of dim ", dim);
-  require(connectivity_.size() % vertices_per_cell_ == 0, "Mesh: the connectivity size (",
-          connectivity_.size(), ") is not a multiple of ", vertices_per_cell_, " nodes per ",
-          to_string(cell_shape));
+  require(connectivity_.size() % vertices_per_cell_ == 0, "Mesh: the connectivity size (", connectivity_.size(),
+          ") is not a multiple of ", vertices_per_cell_, " nodes per ", to_string(cell_shape));
   require(!connectivity_.empty(), "Mesh: the mesh has no cells");
   check_cells();
   find_boundary_faces();
@@ -130,8 +130,8 @@ void Mesh::check_cells() const {
     // `if` rather than require(): the node list in the message is worth building only on failure.
     for (int k = 0; k < vertices_per_cell_; ++k) {
       if (nodes[k] < 0 || nodes[k] >= num_nodes())
-        fail("cell ", c, " (nodes ", join(nodes), ") refers to node ", nodes[k], ", but the mesh has ",
-             num_nodes(), " nodes");
+        fail("cell ", c, " (nodes ", join(nodes), ") refers to node ", nodes[k], ", but the mesh has ", num_nodes(),
+             " nodes");
       for (int l = 0; l < k; ++l)
         if (nodes[l] == nodes[k]) fail("cell ", c, " (nodes ", join(nodes), ") repeats node ", nodes[k]);
     }
@@ -154,10 +154,9 @@ void Mesh::check_cells() const {
     const double tolerance = 1e-12 * std::pow(size, dim_);
     if (min_det > tolerance) continue;
     const std::string where = simplex ? "" : message(" at its vertex ", worst);
-    require(min_det >= -tolerance, "cell ", c, " (nodes ", join(nodes), ") is inverted: det J = ", min_det,
-            where);
-    fail("cell ", c, " (nodes ", join(nodes), ") is degenerate: det J = ", min_det, where,
-         " for a cell of size ", size);
+    require(min_det >= -tolerance, "cell ", c, " (nodes ", join(nodes), ") is inverted: det J = ", min_det, where);
+    fail("cell ", c, " (nodes ", join(nodes), ") is degenerate: det J = ", min_det, where, " for a cell of size ",
+         size);
   }
 }
 
@@ -178,9 +177,8 @@ void Mesh::find_boundary_faces() {
       entries.push_back({key, {c, f}});
     }
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    return std::tie(a.key, a.face) < std::tie(b.key, b.face);
-  });
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return std::tie(a.key, a.face) < std::tie(b.key, b.face); });
 
   std::vector<FaceRef> boundary;
   for (size_t first = 0; first < entries.size();) {
@@ -190,8 +188,8 @@ void Mesh::find_boundary_faces() {
     if (last - first > 2) {
       std::vector<int> owners;
       for (size_t i = first; i < last; ++i) owners.push_back(entries[i].face.cell);
-      fail("non-manifold mesh: the face with nodes ", join(face_nodes(entries[first].face)),
-           " is shared by ", owners.size(), " cells (", join(owners), ")");
+      fail("non-manifold mesh: the face with nodes ", join(face_nodes(entries[first].face)), " is shared by ",
+           owners.size(), " cells (", join(owners), ")");
     }
     first = last;
   }
@@ -210,8 +208,8 @@ std::vector<int> Mesh::face_nodes(FaceRef face) const {
 void Mesh::add_cell_region(const std::string& name, std::vector<int> cells) {
   check_new_region(*this, name, cells.empty());
   for (int c : cells)
-    require(c >= 0 && c < num_cells(), "cell region '", name, "': cell ", c,
-            " does not exist (the mesh has ", num_cells(), " cells)");
+    require(c >= 0 && c < num_cells(), "cell region '", name, "': cell ", c, " does not exist (the mesh has ",
+            num_cells(), " cells)");
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   cell_regions_[name] = std::move(cells);

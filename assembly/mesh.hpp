@@ -51,8 +51,7 @@ class Mesh {
   void add_cell_region(const std::string& name, std::vector<int> cells);
   void add_face_region(const std::string& name, std::vector<FaceRef> faces);
   // Boundary faces whose every vertex satisfies the predicate (e.g. a side of a box).
-  template <class Predicate>
-  void add_boundary_region_where(const std::string& name, Predicate inside);
+  template <class Predicate> void add_boundary_region_where(const std::string& name, Predicate inside);
   bool has_region(const std::string& name) const;
   RegionKind region_kind(const std::string& name) const;
   const std::vector<int>& cell_region(const std::string& name) const;
@@ -81,8 +80,7 @@ class Mesh {
   std::map<std::string, std::vector<FaceRef>> face_regions_;
 };
 
-template <class Predicate>
-void Mesh::add_boundary_region_where(const std::string& name, Predicate inside) {
+template <class Predicate> void Mesh::add_boundary_region_where(const std::string& name, Predicate inside) {
   std::vector<FaceRef> faces;
   for (const FaceRef& f : boundary_faces()) {
     bool all_inside = true;

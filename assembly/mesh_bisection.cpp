@@ -82,7 +82,8 @@ MeshBisection bisect(const Mesh& mesh, const std::vector<int>& marked_cells, Ref
   const auto midpoint = [&](int& node, const Edge& e) {
     if (node >= 0) return node;
     node = int(coordinates.size() / 2);
-    for (int d = 0; d < 2; ++d) coordinates.push_back(0.5 * (coordinates[2 * e.first + d] + coordinates[2 * e.second + d]));
+    for (int d = 0; d < 2; ++d)
+      coordinates.push_back(0.5 * (coordinates[2 * e.first + d] + coordinates[2 * e.second + d]));
     return node;
   };
   std::vector<int> connectivity, parent;
@@ -138,8 +139,8 @@ std::vector<int> dorfler_marking(const std::vector<double>& indicators, double f
   require(fraction > 0 && fraction <= 1, "Dörfler marking: the fraction must be in (0, 1], got ", fraction);
   double total = 0;
   for (size_t i = 0; i < indicators.size(); ++i) {
-    require(std::isfinite(indicators[i]) && indicators[i] >= 0, "Dörfler marking: the indicator of cell ", i,
-            " is ", indicators[i], "; indicators are finite and not negative");
+    require(std::isfinite(indicators[i]) && indicators[i] >= 0, "Dörfler marking: the indicator of cell ", i, " is ",
+            indicators[i], "; indicators are finite and not negative");
     total += indicators[i] * indicators[i];
   }
   std::vector<int> order(indicators.size());

@@ -10,8 +10,8 @@ namespace {
 
 void check_axis(const char* function, const char* axis, double lower, double upper, int n) {
   require(n >= 1, function, ": n", axis, " must be at least 1, got ", n);
-  require(upper > lower, function, ": upper ", axis, " (", upper, ") must be greater than lower ", axis, " (",
-          lower, ")");
+  require(upper > lower, function, ": upper ", axis, " (", upper, ") must be greater than lower ", axis, " (", lower,
+          ")");
 }
 
 // n + 1 equally spaced coordinates; the last is set to upper exactly so that the sides of the domain can
@@ -30,9 +30,8 @@ void add_side_regions(Mesh& mesh, std::span<const double> lower, std::span<const
     const double tolerance = 1e-10 * (upper[axis] - lower[axis]);
     for (int side = 0; side < 2; ++side) {
       const double value = side == 0 ? lower[axis] : upper[axis];
-      mesh.add_boundary_region_where(names[axis][side], [&](std::span<const double> x) {
-        return std::abs(x[axis] - value) <= tolerance;
-      });
+      mesh.add_boundary_region_where(names[axis][side],
+                                     [&](std::span<const double> x) { return std::abs(x[axis] - value) <= tolerance; });
     }
   }
 }
@@ -41,8 +40,7 @@ double tetrahedron_det(const std::vector<double>& coordinates, const std::array<
   double e[3][3];
   for (int k = 0; k < 3; ++k)
     for (int i = 0; i < 3; ++i) e[k][i] = coordinates[3 * tet[k + 1] + i] - coordinates[3 * tet[0] + i];
-  return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-         e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+  return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
          e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
 }
 
@@ -77,8 +75,7 @@ Mesh rectangle_mesh(std::array<double, 2> lower, std::array<double, 2> upper, in
 
   Mesh mesh(2, shape, std::move(coordinates), std::move(connectivity));
   add_side_regions(mesh, lower, upper);
-  const char* const aliases[4][2] = {
-      {"left", "xmin"}, {"right", "xmax"}, {"bottom", "ymin"}, {"top", "ymax"}};
+  const char* const aliases[4][2] = {{"left", "xmin"}, {"right", "xmax"}, {"bottom", "ymin"}, {"top", "ymax"}};
   for (const auto& [alias, side] : aliases) mesh.add_face_region(alias, mesh.face_region(side));
   return mesh;
 }
@@ -89,16 +86,14 @@ Mesh box_mesh(std::array<double, 3> lower, std::array<double, 3> upper, int nx, 
   check_axis("box_mesh", "z", lower[2], upper[2], nz);
   require(shape == Shape::Tetrahedron || shape == Shape::Hexahedron,
           "box_mesh: shape must be tetrahedron or hexahedron, got ", to_string(shape));
-  const std::array<std::vector<double>, 3> axes = {grid_line(lower[0], upper[0], nx),
-                                                    grid_line(lower[1], upper[1], ny),
-                                                    grid_line(lower[2], upper[2], nz)};
+  const std::array<std::vector<double>, 3> axes = {grid_line(lower[0], upper[0], nx), grid_line(lower[1], upper[1], ny),
+                                                   grid_line(lower[2], upper[2], nz)};
 
   std::vector<double> coordinates;
   coordinates.reserve(size_t(nx + 1) * (ny + 1) * (nz + 1) * 3);
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i)
-        coordinates.insert(coordinates.end(), {axes[0][i], axes[1][j], axes[2][k]});
+      for (int i = 0; i <= nx; ++i) coordinates.insert(coordinates.end(), {axes[0][i], axes[1][j], axes[2][k]});
 
   auto node = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
   std::vector<int> connectivity;

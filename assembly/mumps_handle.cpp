@@ -38,8 +38,7 @@ std::uint64_t mix_entry(std::uint64_t hash, int row, int col) {
 
 // Calls visit(row, col) for each coordinate MUMPS is given for `a` (all, or the lower triangle), in CSR
 // order, and returns their fingerprint.
-template <class Visit>
-std::uint64_t visit_coordinates(const CsrMatrix& a, bool lower, Visit&& visit) {
+template <class Visit> std::uint64_t visit_coordinates(const CsrMatrix& a, bool lower, Visit&& visit) {
   std::uint64_t hash = mix_entry(0, int(a.rows()), int(a.cols()));
   for (int row = 0; row < a.rows(); ++row)
     for (int slot = a.outerIndexPtr()[row]; slot < a.outerIndexPtr()[row + 1]; ++slot) {
@@ -204,11 +203,12 @@ void MumpsHandle::run(Job job, const char* phase) {
   const MUMPS_INT info1 = distributed() ? mumps_.infog[0] : mumps_.info[0];
   const MUMPS_INT info2 = distributed() ? mumps_.infog[1] : mumps_.info[1];
   if (info1 == kNumericallySingular)
-    fail(owner_, ": the matrix is numerically singular (", phase, " failed with INFO(1) = ", info1, ", INFO(2) = ", info2,
-         ")");
+    fail(owner_, ": the matrix is numerically singular (", phase, " failed with INFO(1) = ", info1,
+         ", INFO(2) = ", info2, ")");
   // -13: an allocation inside MUMPS failed (-9 is a work array sized too small, which ICNTL(14) mends).
   if (info1 == -13)
-    throw OutOfMemory(message(owner_, ": the ", phase, " ran out of memory (INFO(1) = ", info1, ", INFO(2) = ", info2, ")"));
+    throw OutOfMemory(
+        message(owner_, ": the ", phase, " ran out of memory (INFO(1) = ", info1, ", INFO(2) = ", info2, ")"));
   require(info1 >= 0, owner_, ": the ", phase, " failed with INFO(1) = ", info1, ", INFO(2) = ", info2,
           " (see the MUMPS manual)");
 }

@@ -22,15 +22,16 @@ Eigen::VectorXd interpolate_nested(const FESpace& coarse, const Eigen::VectorXd&
   for (int cell = 0; cell < fine.mesh().num_cells(); ++cell) {
     if (!fine.has_cell(cell)) continue;
     const int parent = parent_cell[cell];
-    require(parent >= 0 && parent < coarse.mesh().num_cells() && coarse.has_cell(parent), "nested interpolation: fine cell ",
-            cell, " lies in coarse cell ", parent, ", which is not in the coarse space");
+    require(parent >= 0 && parent < coarse.mesh().num_cells() && coarse.has_cell(parent),
+            "nested interpolation: fine cell ", cell, " lies in coarse cell ", parent,
+            ", which is not in the coarse space");
     for (int dof : fine.cell_scalar_dofs(cell)) {
       if (done[dof]) continue;
       done[dof] = 1;
       const auto x = fine.scalar_dof_point(dof);
       double xi[3] = {0, 0, 0};
-      require(map_to_reference(coarse.mesh(), parent, x.data(), xi), "nested interpolation: the node of fine dof ",
-              dof, " is not found in its parent cell ", parent);
+      require(map_to_reference(coarse.mesh(), parent, x.data(), xi), "nested interpolation: the node of fine dof ", dof,
+              " is not found in its parent cell ", parent);
       coarse.evaluate_in_cell(coefficients, parent, xi, value.data());
       for (int c = 0; c < components; ++c) result[fine.dof(dof, c)] = value[c];
     }

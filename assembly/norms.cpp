@@ -57,8 +57,8 @@ double l2_error(const FESpace& space, const Eigen::VectorXd& coefficients, const
   return std::sqrt(squared_error(space, coefficients, exact, degree, false));
 }
 
-double h1_seminorm_error(const FESpace& space, const Eigen::VectorXd& coefficients,
-                         const PointGradient& exact_gradient, int degree) {
+double h1_seminorm_error(const FESpace& space, const Eigen::VectorXd& coefficients, const PointGradient& exact_gradient,
+                         int degree) {
   return std::sqrt(squared_error(space, coefficients, exact_gradient, degree, true));
 }
 

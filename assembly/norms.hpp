@@ -15,10 +15,9 @@ using PointFunction = std::function<void(const double* x, double* out)>;
 using PointGradient = std::function<void(const double* x, double* out)>;
 
 // || u_h - u ||_{L2} over the space's domain (its cell region, or the whole mesh).
-double l2_error(const FESpace& space, const Eigen::VectorXd& coefficients, const PointFunction& exact,
-                int degree = -1);
+double l2_error(const FESpace& space, const Eigen::VectorXd& coefficients, const PointFunction& exact, int degree = -1);
 // | u_h - u |_{H1} over the same domain (the seminorm: L2 norm of the gradient error).
-double h1_seminorm_error(const FESpace& space, const Eigen::VectorXd& coefficients,
-                         const PointGradient& exact_gradient, int degree = -1);
+double h1_seminorm_error(const FESpace& space, const Eigen::VectorXd& coefficients, const PointGradient& exact_gradient,
+                         int degree = -1);
 
 }  // namespace pc

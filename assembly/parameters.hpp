@@ -32,8 +32,8 @@ struct Range {
 
 struct ParameterDeclaration {
   std::string name;
-  std::string unit;  // SI unit, "1" for a pure number
-  std::string doc;   // one line
+  std::string unit;                     // SI unit, "1" for a pure number
+  std::string doc;                      // one line
   std::optional<double> default_value;  // none: the parameter is required
   Range range;
   bool required() const { return !default_value.has_value(); }

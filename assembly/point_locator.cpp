@@ -72,15 +72,15 @@ PointLocator::PointLocator(const Mesh& mesh) : mesh_(mesh) {
   for (size_t b = 0; b < num_buckets; ++b) bucket_start_[b + 1] += bucket_start_[b];
   bucket_cells_.resize(bucket_start_.back());
   std::vector<int> next(bucket_start_.begin(), bucket_start_.end() - 1);
-  for (int c = 0; c < mesh.num_cells(); ++c) for_each_bucket_of(c, [&](size_t bucket) { bucket_cells_[next[bucket]++] = c; });
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    for_each_bucket_of(c, [&](size_t bucket) { bucket_cells_[next[bucket]++] = c; });
 }
 
 std::optional<LocatedPoint> PointLocator::locate(const double* x) const {
   return locate(x, [](int) { return true; });
 }
 
-std::optional<LocatedPoint> PointLocator::locate(const double* x,
-                                                 const std::function<bool(int cell)>& accept) const {
+std::optional<LocatedPoint> PointLocator::locate(const double* x, const std::function<bool(int cell)>& accept) const {
   const int dim = mesh_.dim();
   std::array<int, 3> index{0, 0, 0};
   for (int d = 0; d < dim; ++d) {
@@ -123,16 +123,16 @@ LocatedPoint locate_in_space(const FESpace& space, const PointLocator& locator, 
 
 }  // namespace
 
-std::vector<double> evaluate_at(const FESpace& space, const Eigen::VectorXd& coefficients,
-                                const PointLocator& locator, const double* x) {
+std::vector<double> evaluate_at(const FESpace& space, const Eigen::VectorXd& coefficients, const PointLocator& locator,
+                                const double* x) {
   const LocatedPoint at = locate_in_space(space, locator, x, "evaluate_at");
   std::vector<double> value(space.num_components());
   space.evaluate_in_cell(coefficients, at.cell, at.xi.data(), value.data());
   return value;
 }
 
-std::vector<double> gradient_at(const FESpace& space, const Eigen::VectorXd& coefficients,
-                                const PointLocator& locator, const double* x) {
+std::vector<double> gradient_at(const FESpace& space, const Eigen::VectorXd& coefficients, const PointLocator& locator,
+                                const double* x) {
   const LocatedPoint at = locate_in_space(space, locator, x, "gradient_at");
   std::vector<double> gradient(size_t(space.num_components()) * space.mesh().dim());
   space.gradient_in_cell(coefficients, at.cell, at.xi.data(), gradient.data());

@@ -39,10 +39,10 @@ class PointLocator {
 };
 
 // Value of a field at a physical point (num_components values); throws if x is outside the mesh.
-std::vector<double> evaluate_at(const FESpace& space, const Eigen::VectorXd& coefficients,
-                                const PointLocator& locator, const double* x);
+std::vector<double> evaluate_at(const FESpace& space, const Eigen::VectorXd& coefficients, const PointLocator& locator,
+                                const double* x);
 // Its gradient there: out[c * dim + d] = d f_c / d x_d (on a cell boundary, the gradient of the cell found).
-std::vector<double> gradient_at(const FESpace& space, const Eigen::VectorXd& coefficients,
-                                const PointLocator& locator, const double* x);
+std::vector<double> gradient_at(const FESpace& space, const Eigen::VectorXd& coefficients, const PointLocator& locator,
+                                const double* x);
 
 }  // namespace pc

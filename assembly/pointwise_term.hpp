@@ -26,31 +26,29 @@ inline constexpr int kMaxTermFields = 6;
 inline constexpr int kPointDirections = 12;
 using PointDual = Dual<kPointDirections>;
 
-template <class S>
-struct PointInput {
+template <class S> struct PointInput {
   int dim = 0;
   double time = 0;
-  const double* x = nullptr;       // physical point
-  const double* normal = nullptr;  // outward unit normal (faces), else null
+  const double* x = nullptr;                                           // physical point
+  const double* normal = nullptr;                                      // outward unit normal (faces), else null
   std::array<std::array<S, 3>, kMaxTermFields> value{};                // value[field][component]
   std::array<std::array<std::array<S, 3>, 3>, kMaxTermFields> grad{};  // grad[field][component][direction]
 };
 
-template <class S>
-struct PointFlux {
-  std::array<std::array<S, 3>, kMaxTermFields> f0{};                // f0[test field][component]
+template <class S> struct PointFlux {
+  std::array<std::array<S, 3>, kMaxTermFields> f0{};                 // f0[test field][component]
   std::array<std::array<std::array<S, 3>, 3>, kMaxTermFields> f1{};  // f1[test field][component][direction]
 };
 
-template <class Kernel>
-class PointwiseTerm : public Term {
+template <class Kernel> class PointwiseTerm : public Term {
  public:
   PointwiseTerm(std::string name, Integration integration, std::vector<FieldUse> fields, std::vector<int> tests,
                 std::vector<Coupling> couplings, Kernel kernel, int extra_degree = 0)
       : Term(std::move(name), integration, std::move(fields), std::move(tests), std::move(couplings)),
-        kernel_(std::move(kernel)), extra_degree_(extra_degree) {
-    require(int(this->fields().size()) <= kMaxTermFields, "term '", this->name(), "' names more than ",
-            kMaxTermFields, " fields");
+        kernel_(std::move(kernel)),
+        extra_degree_(extra_degree) {
+    require(int(this->fields().size()) <= kMaxTermFields, "term '", this->name(), "' names more than ", kMaxTermFields,
+            " fields");
   }
 
   const Kernel& kernel() const { return kernel_; }
@@ -93,8 +91,7 @@ class PointwiseTerm : public Term {
 
   // Loads values and gradients at point q; with S = PointDual, field `seeded` carries the directions
   // value(c) -> c * (1 + dim), grad(c, d) -> c * (1 + dim) + 1 + d.
-  template <class S>
-  void load(const ElementData& e, int q, PointInput<S>& in, int seeded) const {
+  template <class S> void load(const ElementData& e, int q, PointInput<S>& in, int seeded) const {
     in.dim = e.dim;
     in.time = e.time;
     in.x = e.points[q].data();
@@ -122,8 +119,7 @@ class PointwiseTerm : public Term {
     }
   }
 
-  template <class S>
-  void add_residual(const ElementData& e, int q, const PointFlux<S>& out, LocalSystem& local) const {
+  template <class S> void add_residual(const ElementData& e, int q, const PointFlux<S>& out, LocalSystem& local) const {
     const double w = e.weights[q];
     for (int ti = 0; ti < int(tests().size()); ++ti) {
       const int t = tests()[ti];

@@ -37,8 +37,7 @@ bool broadcast(bool value, int root = 0);
 // by one process (its elements, its files) never leaves the others waiting in the next collective call.
 void agree_on_failure(std::exception_ptr failure, const std::string& what);
 // Runs `action` and agrees on its failure.
-template <class Action>
-void run_agreed(const std::string& what, Action&& action) {
+template <class Action> void run_agreed(const std::string& what, Action&& action) {
   std::exception_ptr failure;
   try {
     action();

@@ -175,7 +175,8 @@ QuadratureRule collapsed_tetrahedron_rule(int degree) {
 QuadratureRule triangle_rule(int degree) {
   if (degree <= 1) return {Shape::Triangle, degree, {{1.0 / 3, 1.0 / 3, 0}}, {0.5}};
   if (degree == 2) {
-    return {Shape::Triangle, degree,
+    return {Shape::Triangle,
+            degree,
             {{1.0 / 6, 1.0 / 6, 0}, {2.0 / 3, 1.0 / 6, 0}, {1.0 / 6, 2.0 / 3, 0}},
             {1.0 / 6, 1.0 / 6, 1.0 / 6}};
   }
@@ -186,7 +187,8 @@ QuadratureRule tetrahedron_rule(int degree) {
   if (degree <= 1) return {Shape::Tetrahedron, degree, {{0.25, 0.25, 0.25}}, {1.0 / 6}};
   if (degree == 2) {
     const double a = (5 - std::sqrt(5.0)) / 20, b = (5 + 3 * std::sqrt(5.0)) / 20;
-    return {Shape::Tetrahedron, degree,
+    return {Shape::Tetrahedron,
+            degree,
             {{a, a, a}, {b, a, a}, {a, b, a}, {a, a, b}},
             {1.0 / 24, 1.0 / 24, 1.0 / 24, 1.0 / 24}};
   }
@@ -229,8 +231,8 @@ const QuadratureRule& quadrature(Shape shape, int degree) {
   // thread-safe.
   static const std::vector<std::vector<QuadratureRule>> rules = make_all_rules();
   const int index = static_cast<int>(shape);
-  require(index >= 0 && index < static_cast<int>(rules.size()), "no quadrature rule of degree ", degree,
-          " on a ", to_string(shape));
+  require(index >= 0 && index < static_cast<int>(rules.size()), "no quadrature rule of degree ", degree, " on a ",
+          to_string(shape));
   return rules[index][degree];
 }
 

@@ -20,8 +20,7 @@ void barycentric(int dim, const double* xi, double* lambda) {
 
 constexpr double barycentric_gradient(int k, int d) { return k == 0 ? -1.0 : (k - 1 == d ? 1.0 : 0.0); }
 
-void simplex_values(Shape shape, int order, std::span<const DofEntity> entities, const double* xi,
-                    double* N) {
+void simplex_values(Shape shape, int order, std::span<const DofEntity> entities, const double* xi, double* N) {
   double lambda[4];
   barycentric(dimension(shape), xi, lambda);
   for (std::size_t i = 0; i < entities.size(); ++i) {
@@ -35,8 +34,7 @@ void simplex_values(Shape shape, int order, std::span<const DofEntity> entities,
   }
 }
 
-void simplex_gradients(Shape shape, int order, std::span<const DofEntity> entities, const double* xi,
-                       double* dN) {
+void simplex_gradients(Shape shape, int order, std::span<const DofEntity> entities, const double* xi, double* dN) {
   const int dim = dimension(shape);
   double lambda[4];
   barycentric(dim, xi, lambda);

@@ -39,8 +39,9 @@ Eigen::Matrix<double, 3, 2> face_map_derivative(Shape cell, int face, const doub
 
 RegionGeometry::RegionGeometry(const Mesh& mesh, const std::string& region, int degree,
                                std::span<const char> owned_cells)
-    : mesh_(mesh), region_(region), integration_(mesh.region_kind(region) == RegionKind::Cells ? Integration::Cells
-                                                                                                : Integration::Faces) {
+    : mesh_(mesh),
+      region_(region),
+      integration_(mesh.region_kind(region) == RegionKind::Cells ? Integration::Cells : Integration::Faces) {
   const Shape shape = mesh.cell_shape();
   reference_points_.resize(num_faces(shape) + 1);
   if (integration_ == Integration::Cells) {
@@ -58,8 +59,8 @@ RegionGeometry::RegionGeometry(const Mesh& mesh, const std::string& region, int 
 void RegionGeometry::compute_cells(std::span<const char> owned_cells) {
   const int dim = mesh_.dim();
   const int nq = num_points();
-  require(owned_cells.empty() || int(owned_cells.size()) == mesh_.num_cells(), "RegionGeometry: ",
-          owned_cells.size(), " ownership flags for a mesh of ", mesh_.num_cells(), " cells");
+  require(owned_cells.empty() || int(owned_cells.size()) == mesh_.num_cells(), "RegionGeometry: ", owned_cells.size(),
+          " ownership flags for a mesh of ", mesh_.num_cells(), " cells");
   for (int c : mesh_.cell_region(region_))
     if (owned_cells.empty() || owned_cells[size_t(c)]) cells_.push_back(c);
   const size_t n = cells_.size() * nq;
@@ -84,8 +85,8 @@ void RegionGeometry::compute_faces(std::span<const char> owned_cells) {
   const int dim = mesh_.dim();
   const int nq = num_points();
   const Shape shape = mesh_.cell_shape();
-  require(owned_cells.empty() || int(owned_cells.size()) == mesh_.num_cells(), "RegionGeometry: ",
-          owned_cells.size(), " ownership flags for a mesh of ", mesh_.num_cells(), " cells");
+  require(owned_cells.empty() || int(owned_cells.size()) == mesh_.num_cells(), "RegionGeometry: ", owned_cells.size(),
+          " ownership flags for a mesh of ", mesh_.num_cells(), " cells");
   for (const FaceRef& f : mesh_.face_region(region_)) {
     if (!owned_cells.empty() && !owned_cells[size_t(f.cell)]) continue;
     cells_.push_back(f.cell);

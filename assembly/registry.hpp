@@ -21,8 +21,7 @@
 
 namespace pc {
 
-template <class Factory>
-class Registry {
+template <class Factory> class Registry {
  public:
   struct Entry {
     std::string name;
@@ -96,8 +95,8 @@ __attribute__((visibility("hidden"))) inline std::vector<std::function<void()>>&
 #define PC_REGISTRY_CONCAT(a, b) PC_REGISTRY_CONCAT_INNER(a, b)
 // Adds an entry to a registry when the library or program that holds this line is loaded (a plugin's:
 // when the loader has accepted it).
-#define PC_REGISTER(registry, ...)                                                                      \
-  namespace {                                                                                           \
-  [[maybe_unused]] const bool PC_REGISTRY_CONCAT(pc_registered_, __LINE__) =                            \
-      PC_REGISTRY_RUN((registry).add(__VA_ARGS__));                                                     \
+#define PC_REGISTER(registry, ...)                                                                         \
+  namespace {                                                                                              \
+  [[maybe_unused]] const bool PC_REGISTRY_CONCAT(pc_registered_,                                           \
+                                                 __LINE__) = PC_REGISTRY_RUN((registry).add(__VA_ARGS__)); \
   }

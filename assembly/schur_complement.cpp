@@ -87,8 +87,7 @@ Eigen::VectorXd SchurComplement::scaled(const Eigen::VectorXd& b) const {
 // the interface solution, and the backward substitution completes x in RHS.
 void SchurComplement::solve_phase(Eigen::VectorXd& rhs, Eigen::VectorXd& reduced, int phase) {
   require(factorized_, "Schur complement: solve needs a successful factorize() first");
-  require(rhs.size() == mumps_->n, "Schur complement: the right-hand side has ", rhs.size(), " rows, not ",
-          mumps_->n);
+  require(rhs.size() == mumps_->n, "Schur complement: the right-hand side has ", rhs.size(), " rows, not ", mumps_->n);
   require(rhs.allFinite(), "Schur complement: the right-hand side contains NaN/Inf");
   mumps_.icntl(26) = phase;
   mumps_->rhs = rhs.data();

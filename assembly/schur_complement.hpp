@@ -17,8 +17,8 @@
 #include <Eigen/Core>
 
 #include "assembly/mumps_handle.hpp"
-#include "assembly/symmetrizing_scale.hpp"
 #include "assembly/sparse.hpp"
+#include "assembly/symmetrizing_scale.hpp"
 
 namespace pc {
 

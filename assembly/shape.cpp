@@ -14,12 +14,11 @@ constexpr int kTetFaces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
 constexpr int kHexEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                   {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 // Faces in VTK's order for the triquadratic hexahedron: x = 0, x = 1, y = 0, y = 1, z = 0, z = 1.
-constexpr int kHexFaces[6][4] = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4},
-                                 {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+constexpr int kHexFaces[6][4] = {{0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7}};
 
 void check_index(int index, int count, const char* what, Shape shape) {
-  require(index >= 0 && index < count, what, " ", index, " does not exist on a ", to_string(shape),
-          " (it has ", count, ")");
+  require(index >= 0 && index < count, what, " ", index, " does not exist on a ", to_string(shape), " (it has ", count,
+          ")");
 }
 
 }  // namespace

@@ -54,10 +54,11 @@ class CholmodSolver final : public SolverBase {
     cholmod_sparse a = view();
     cholmod_factorize(&a, factor_, &common_);
     if (common_.status == CHOLMOD_NOT_POSDEF || factor_->minor < factor_->n)
-      fail(name(), ": the matrix is not positive definite (the factorization broke down at column ",
-           factor_->minor, " of the reordered matrix); use umfpack or mumps for indefinite matrices");
+      fail(name(), ": the matrix is not positive definite (the factorization broke down at column ", factor_->minor,
+           " of the reordered matrix); use umfpack or mumps for indefinite matrices");
     // Positive statuses other than the one above are warnings (a tiny diagonal of L), not failures.
-    if (common_.status == CHOLMOD_OUT_OF_MEMORY) throw OutOfMemory(message(name(), ": the factorization ran out of memory"));
+    if (common_.status == CHOLMOD_OUT_OF_MEMORY)
+      throw OutOfMemory(message(name(), ": the factorization ran out of memory"));
     require(common_.status >= CHOLMOD_OK, name(), ": the factorization failed with status ", common_.status);
   }
 
@@ -105,11 +106,10 @@ class CholmodSolver final : public SolverBase {
       for (int slot = m.outerIndexPtr()[row]; slot < m.outerIndexPtr()[row + 1]; ++slot) {
         const int col = m.innerIndexPtr()[slot];
         const double mirror = value_at(mirror_slots_[slot]);
-        const double scale =
-            std::sqrt(std::abs(value_at(diagonal_slots_[row]) * value_at(diagonal_slots_[col])));
+        const double scale = std::sqrt(std::abs(value_at(diagonal_slots_[row]) * value_at(diagonal_slots_[col])));
         if (std::abs(values[slot] - mirror) > kSymmetryTolerance * scale)
-          fail(name(), ": the matrix is not symmetric: A(", row, ", ", col, ") = ", values[slot], " but A(",
-               col, ", ", row, ") = ", mirror, "; use umfpack or mumps for unsymmetric matrices");
+          fail(name(), ": the matrix is not symmetric: A(", row, ", ", col, ") = ", values[slot], " but A(", col, ", ",
+               row, ") = ", mirror, "; use umfpack or mumps for unsymmetric matrices");
       }
   }
 
@@ -126,4 +126,5 @@ std::unique_ptr<LinearSolver> make_cholmod_solver() { return std::make_unique<Ch
 
 }  // namespace pc
 
-PC_REGISTER(pc::linear_solver_registry(), {"cholmod", "SuiteSparse CHOLMOD: symmetric positive definite matrices only", {}, pc::make_cholmod_solver})
+PC_REGISTER(pc::linear_solver_registry(),
+            {"cholmod", "SuiteSparse CHOLMOD: symmetric positive definite matrices only", {}, pc::make_cholmod_solver})

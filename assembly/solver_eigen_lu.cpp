@@ -22,8 +22,8 @@ class EigenLuSolver final : public SolverBase {
   void factorize_values() override {
     lu_.factorize(ColumnMajor(matrix()));
     // SparseLU's message tells a zero pivot ("... SINGULAR ...") from a memory failure.
-    require(lu_.info() == Eigen::Success, name(),
-            ": the factorization failed (SparseLU: ", lu_.lastErrorMessage(), ")");
+    require(lu_.info() == Eigen::Success, name(), ": the factorization failed (SparseLU: ", lu_.lastErrorMessage(),
+            ")");
   }
 
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& b) const override { return lu_.solve(b); }
@@ -37,4 +37,5 @@ std::unique_ptr<LinearSolver> make_eigen_lu_solver() { return std::make_unique<E
 
 }  // namespace pc
 
-PC_REGISTER(pc::linear_solver_registry(), {"eigen-lu", "Eigen's SparseLU: the reference, slowest", {}, pc::make_eigen_lu_solver})
+PC_REGISTER(pc::linear_solver_registry(),
+            {"eigen-lu", "Eigen's SparseLU: the reference, slowest", {}, pc::make_eigen_lu_solver})

@@ -79,4 +79,10 @@ std::unique_ptr<LinearSolver> make_mumps_solver() { return std::make_unique<Mump
 
 }  // namespace pc
 
-PC_REGISTER(pc::linear_solver_registry(), {"mumps", "MUMPS, with its own ordering (distributed over the processes of an MPI run); LDL^T for matrices that a row scaling makes symmetric, LU otherwise (the default: 2x faster factorisations and 3-6x faster solves than UMFPACK on the shipped scenes)", {}, pc::make_mumps_solver})
+PC_REGISTER(pc::linear_solver_registry(),
+            {"mumps",
+             "MUMPS, with its own ordering (distributed over the processes of an MPI run); LDL^T for matrices that a "
+             "row scaling makes symmetric, LU otherwise (the default: 2x faster factorisations and 3-6x faster solves "
+             "than UMFPACK on the shipped scenes)",
+             {},
+             pc::make_mumps_solver})

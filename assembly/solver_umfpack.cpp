@@ -42,8 +42,8 @@ class UmfpackSolver final : public SolverBase {
     const int n = static_cast<int>(matrix().rows());
     // No values: UMFPACK would only use them for statistics, and analyze() is about the pattern.
     double info[UMFPACK_INFO];
-    check(umfpack_di_symbolic(n, n, matrix().outerIndexPtr(), matrix().innerIndexPtr(), nullptr, &symbolic_,
-                              control_, info),
+    check(umfpack_di_symbolic(n, n, matrix().outerIndexPtr(), matrix().innerIndexPtr(), nullptr, &symbolic_, control_,
+                              info),
           "symbolic analysis");
     // Upper bounds (UMFPACK's pivoting may do better), which is what a cost model wants.
     estimate_ = {info[UMFPACK_LNZ_ESTIMATE] + info[UMFPACK_UNZ_ESTIMATE], info[UMFPACK_FLOPS_ESTIMATE]};
@@ -52,8 +52,8 @@ class UmfpackSolver final : public SolverBase {
   // The Symbolic object is kept: every factorization of the pattern reuses its ordering.
   void factorize_values() override {
     umfpack_di_free_numeric(&numeric_);
-    const int status = umfpack_di_numeric(matrix().outerIndexPtr(), matrix().innerIndexPtr(),
-                                          matrix().valuePtr(), symbolic_, &numeric_, control_, nullptr);
+    const int status = umfpack_di_numeric(matrix().outerIndexPtr(), matrix().innerIndexPtr(), matrix().valuePtr(),
+                                          symbolic_, &numeric_, control_, nullptr);
     if (status == UMFPACK_WARNING_singular_matrix) {
       umfpack_di_free_numeric(&numeric_);
       fail(name(), ": the matrix is singular (UMFPACK found a zero pivot)");
@@ -64,8 +64,8 @@ class UmfpackSolver final : public SolverBase {
   // The matrix arrays are passed again for UMFPACK's iterative refinement.
   Eigen::VectorXd solve_factorized(const Eigen::VectorXd& b) const override {
     Eigen::VectorXd x(b.size());
-    check(umfpack_di_solve(UMFPACK_At, matrix().outerIndexPtr(), matrix().innerIndexPtr(),
-                           matrix().valuePtr(), x.data(), b.data(), numeric_, control_, nullptr),
+    check(umfpack_di_solve(UMFPACK_At, matrix().outerIndexPtr(), matrix().innerIndexPtr(), matrix().valuePtr(),
+                           x.data(), b.data(), numeric_, control_, nullptr),
           "solve");
     return x;
   }
@@ -73,9 +73,9 @@ class UmfpackSolver final : public SolverBase {
   // Negative statuses are errors; positive ones other than "singular" (handled above) only warn about
   // the determinant over- or underflowing, which we do not use.
   void check(int status, const char* phase) const {
-    if (status == UMFPACK_ERROR_out_of_memory) throw OutOfMemory(message(name(), ": the ", phase, " ran out of memory"));
-    require(status >= UMFPACK_OK, name(), ": the ", phase, " failed with status ", status, " (",
-            describe(status), ")");
+    if (status == UMFPACK_ERROR_out_of_memory)
+      throw OutOfMemory(message(name(), ": the ", phase, " ran out of memory"));
+    require(status >= UMFPACK_OK, name(), ": the ", phase, " failed with status ", status, " (", describe(status), ")");
   }
 
   FactorEstimate factor_estimate() const override { return estimate_; }
@@ -92,4 +92,5 @@ std::unique_ptr<LinearSolver> make_umfpack_solver() { return std::make_unique<Um
 
 }  // namespace pc
 
-PC_REGISTER(pc::linear_solver_registry(), {"umfpack", "SuiteSparse UMFPACK with AMD ordering", {}, pc::make_umfpack_solver})
+PC_REGISTER(pc::linear_solver_registry(),
+            {"umfpack", "SuiteSparse UMFPACK with AMD ordering", {}, pc::make_umfpack_solver})

@@ -9,8 +9,8 @@ int find_slot(const CsrMatrix& matrix, int row, int col) {
   const int* indices = matrix.innerIndexPtr();
   const int* begin = indices + matrix.outerIndexPtr()[row];
   // An uncompressed matrix has free room at the end of each row: only innerNonZeroPtr() entries count.
-  const int* end = matrix.isCompressed() ? indices + matrix.outerIndexPtr()[row + 1]
-                                         : begin + matrix.innerNonZeroPtr()[row];
+  const int* end =
+      matrix.isCompressed() ? indices + matrix.outerIndexPtr()[row + 1] : begin + matrix.innerNonZeroPtr()[row];
   // Column indices are sorted within a row.
   const int* found = std::lower_bound(begin, end, col);
   return found != end && *found == col ? static_cast<int>(found - indices) : -1;

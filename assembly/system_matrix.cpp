@@ -13,9 +13,9 @@ int SystemMatrix::declare(int row_field, int col_field, const CsrRef& block) {
   require(block.isCompressed(), "SystemMatrix: blocks must be compressed");
   require(block.rows() == int(layout_.global_indices(row_field).size()) &&
               block.cols() == int(layout_.global_indices(col_field).size()),
-          "SystemMatrix: block is ", block.rows(), " x ", block.cols(), " but fields '",
-          layout_.field_name(row_field), "' x '", layout_.field_name(col_field), "' have ",
-          layout_.global_indices(row_field).size(), " x ", layout_.global_indices(col_field).size(), " dofs");
+          "SystemMatrix: block is ", block.rows(), " x ", block.cols(), " but fields '", layout_.field_name(row_field),
+          "' x '", layout_.field_name(col_field), "' have ", layout_.global_indices(row_field).size(), " x ",
+          layout_.global_indices(col_field).size(), " dofs");
   Block b{row_field, col_field, int(block.rows()), int(block.cols()), long(block.nonZeros()), {}, {}, {}};
   b.outer.assign(block.outerIndexPtr(), block.outerIndexPtr() + block.rows() + 1);
   b.inner.assign(block.innerIndexPtr(), block.innerIndexPtr() + block.nonZeros());

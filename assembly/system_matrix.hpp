@@ -42,8 +42,7 @@ class SystemMatrix {
  private:
   // target(row, slot) += factor * block for each of the block's entries on a free row and column; target
   // is given the global row and the slot (an index into the matrix's pattern) of each entry.
-  template <class Target>
-  void scatter(int handle, const CsrRef& block, double factor, Target&& target) const;
+  template <class Target> void scatter(int handle, const CsrRef& block, double factor, Target&& target) const;
 
   struct Block {
     int row_field, col_field, rows, cols;

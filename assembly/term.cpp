@@ -8,7 +8,10 @@ namespace pc {
 
 Term::Term(std::string name, Integration integration, std::vector<FieldUse> fields, std::vector<int> tests,
            std::vector<Coupling> couplings)
-    : name_(std::move(name)), integration_(integration), fields_(std::move(fields)), tests_(std::move(tests)),
+    : name_(std::move(name)),
+      integration_(integration),
+      fields_(std::move(fields)),
+      tests_(std::move(tests)),
       couplings_(std::move(couplings)) {
   const int n = static_cast<int>(fields_.size());
   require(n > 0, "term '", name_, "' names no field");
@@ -18,8 +21,7 @@ Term::Term(std::string name, Integration integration, std::vector<FieldUse> fiel
             "' is integrated on faces, where gradients are not available, but asks for the gradient of '",
             fields_[a].name, "'");
     for (int b = 0; b < a; ++b)
-      require(fields_[a].name != fields_[b].name, "term '", name_, "' names field '", fields_[a].name,
-              "' twice");
+      require(fields_[a].name != fields_[b].name, "term '", name_, "' names field '", fields_[a].name, "' twice");
   }
   for (int t : tests_) require(t >= 0 && t < n, "term '", name_, "': test field index ", t, " out of range");
   for (const Coupling& c : couplings_) {

@@ -49,11 +49,11 @@ struct ElementData {
   int num_points = 0;
   double time = 0;
   int cell = -1;
-  int local_face = -1;                          // -1 for cell integration
-  std::vector<double> weights;                  // quadrature weight * |det J| (or face measure factor)
-  std::vector<std::array<double, 3>> points;    // physical points
-  std::vector<std::array<double, 3>> normals;   // outward unit normals; faces only
-  std::vector<Field> fields;                    // in the order of Term::fields()
+  int local_face = -1;                         // -1 for cell integration
+  std::vector<double> weights;                 // quadrature weight * |det J| (or face measure factor)
+  std::vector<std::array<double, 3>> points;   // physical points
+  std::vector<std::array<double, 3>> normals;  // outward unit normals; faces only
+  std::vector<Field> fields;                   // in the order of Term::fields()
 };
 
 // Local contributions of one element, zeroed and sized by the engine before Term::assemble.

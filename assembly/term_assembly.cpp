@@ -147,14 +147,14 @@ void TermAssembly::check_arguments(std::span<const Eigen::VectorXd* const> value
   const Term& term = *term_;
   const int n_fields = static_cast<int>(spaces_.size());
   const int n_tests = static_cast<int>(term.tests().size());
-  require(int(values.size()) == n_fields, "term '", term.name(), "': ", values.size(), " value vectors for ",
-          n_fields, " fields");
-  require(int(residuals.size()) == n_tests, "term '", term.name(), "': ", residuals.size(),
-          " residual vectors for ", n_tests, " test fields");
+  require(int(values.size()) == n_fields, "term '", term.name(), "': ", values.size(), " value vectors for ", n_fields,
+          " fields");
+  require(int(residuals.size()) == n_tests, "term '", term.name(), "': ", residuals.size(), " residual vectors for ",
+          n_tests, " test fields");
   for (int f = 0; f < n_fields; ++f)
     require(values[f] != nullptr && values[f]->size() == spaces_[f]->num_dofs(), "term '", term.name(),
-            "': the values of field '", term.fields()[f].name, "' have ",
-            values[f] ? values[f]->size() : 0, " entries, its space has ", spaces_[f]->num_dofs(), " dofs");
+            "': the values of field '", term.fields()[f].name, "' have ", values[f] ? values[f]->size() : 0,
+            " entries, its space has ", spaces_[f]->num_dofs(), " dofs");
   for (int t = 0; t < n_tests; ++t)
     require(residuals[t] == nullptr || residuals[t]->size() == spaces_[term.tests()[t]]->num_dofs(), "term '",
             term.name(), "': residual of '", term.fields()[term.tests()[t]].name, "' has the wrong size");
@@ -219,8 +219,7 @@ void TermAssembly::interpolate(int e, const RegionGeometry& geo, std::span<const
           phys[d] = s;
         }
         for (int c = 0; c < nc; ++c)
-          for (int d = 0; d < dim; ++d)
-            field.grad[(q * nc + c) * dim + d] += phys[d] * field.coefficients[i * nc + c];
+          for (int d = 0; d < dim; ++d) field.grad[(q * nc + c) * dim + d] += phys[d] * field.coefficients[i * nc + c];
       }
     }
   }

@@ -6,8 +6,7 @@ namespace pc {
 namespace {
 
 // The entry the cache holds weakly under `key`, or a new one from make() if none is alive.
-template <class Map, class Key, class Make>
-auto held_or_made(Map& map, const Key& key, Make&& make) {
+template <class Map, class Key, class Make> auto held_or_made(Map& map, const Key& key, Make&& make) {
   auto held = map[key].lock();
   if (!held) {
     held = make();
@@ -37,6 +36,5 @@ std::shared_ptr<const BlockPattern> TermAssemblyCache::pattern(const std::shared
   return held_or_made(patterns_, std::tuple{geometry->region(), &test, &trial},
                       [&] { return std::make_shared<const BlockPattern>(make_block_pattern(*geometry, test, trial)); });
 }
-
 
 }  // namespace pc

@@ -34,7 +34,8 @@ TimeFunction TimeFunction::ramp(double value, double duration) {
 
 TimeFunction TimeFunction::sine(double amplitude, double frequency, double phase, double offset) {
   require_finite(amplitude, "the sine's amplitude");
-  require(std::isfinite(frequency) && frequency > 0, "time function: the sine's frequency must be > 0, got ", frequency);
+  require(std::isfinite(frequency) && frequency > 0, "time function: the sine's frequency must be > 0, got ",
+          frequency);
   require_finite(phase, "the sine's phase");
   require_finite(offset, "the sine's offset");
   TimeFunction f;
@@ -76,8 +77,8 @@ double TimeFunction::value(double t) const {
   }
   if (t <= points_.front().first) return points_.front().second;
   if (t >= points_.back().first) return points_.back().second;
-  const auto upper = std::upper_bound(points_.begin(), points_.end(), t,
-                                      [](double time, const auto& p) { return time < p.first; });
+  const auto upper =
+      std::upper_bound(points_.begin(), points_.end(), t, [](double time, const auto& p) { return time < p.first; });
   const auto& [t1, v1] = *upper;
   const auto& [t0, v0] = *(upper - 1);
   return v0 + (v1 - v0) * (t - t0) / (t1 - t0);
@@ -118,10 +119,12 @@ std::string TimeFunction::describe() const {
   switch (kind_) {
     case Kind::Constant: return message("constant(", a_, ")");
     case Kind::Ramp: return message("ramp(to ", a_, " over ", b_, " s)");
-    case Kind::Sine: return message("sine(amplitude ", a_, ", frequency ", b_, " Hz, phase ", c_, " rad, offset ", d_, ")");
+    case Kind::Sine:
+      return message("sine(amplitude ", a_, ", frequency ", b_, " Hz, phase ", c_, " rad, offset ", d_, ")");
     case Kind::Table: break;
   }
-  return message("table(", points_.size(), " points from t = ", points_.front().first, " to ", points_.back().first, ")");
+  return message("table(", points_.size(), " points from t = ", points_.front().first, " to ", points_.back().first,
+                 ")");
 }
 
 }  // namespace pc

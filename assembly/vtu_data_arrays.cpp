@@ -20,11 +20,13 @@ constexpr std::uint64_t kBlockBytes = 32768;
 // what does is their zeros (the z of 2D points and vectors), the connectivity and the offsets.
 constexpr int kZlibLevel = 1;
 
-template <class Value>
-constexpr const char* vtk_type() {
-  if constexpr (std::is_same_v<Value, double>) return "Float64";
-  else if constexpr (std::is_same_v<Value, std::int64_t>) return "Int64";
-  else return "UInt8";
+template <class Value> constexpr const char* vtk_type() {
+  if constexpr (std::is_same_v<Value, double>)
+    return "Float64";
+  else if constexpr (std::is_same_v<Value, std::int64_t>)
+    return "Int64";
+  else
+    return "UInt8";
 }
 
 // The values' bytes, little-endian whatever the host: their own memory on a little-endian host, else a
@@ -54,16 +56,14 @@ std::string base64(std::string_view bytes) {
   for (size_t i = 0; i < bytes.size(); i += 3) {
     const size_t n = std::min<size_t>(3, bytes.size() - i);
     std::uint32_t group = 0;
-    for (size_t k = 0; k < 3; ++k)
-      group = (group << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
+    for (size_t k = 0; k < 3; ++k) group = (group << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
     for (size_t k = 0; k < 4; ++k) text.push_back(k <= n ? alphabet[(group >> (18 - 6 * k)) & 0x3f] : '=');
   }
   return text;
 }
 
 // One tuple per line. Doubles in their shortest round-trip form, so that the text reads back bit for bit.
-template <class Value>
-std::string ascii(std::span<const Value> values, int components) {
+template <class Value> std::string ascii(std::span<const Value> values, int components) {
   std::string text;
   text.reserve(values.size() * (std::is_floating_point_v<Value> ? 16 : 4));
   char number[32];
@@ -91,8 +91,9 @@ void compress_blocks(std::string_view bytes, std::string& header, std::string& b
     uLongf compressed = compressBound(block_size);
     const size_t at = blocks.size();
     blocks.resize(at + compressed);
-    const int status = compress2(reinterpret_cast<Bytef*>(blocks.data() + at), &compressed,
-                                 reinterpret_cast<const Bytef*>(bytes.data() + b * kBlockBytes), block_size, kZlibLevel);
+    const int status =
+        compress2(reinterpret_cast<Bytef*>(blocks.data() + at), &compressed,
+                  reinterpret_cast<const Bytef*>(bytes.data() + b * kBlockBytes), block_size, kZlibLevel);
     require(status == Z_OK, "VtuWriter: zlib could not compress array '", name, "' (zlib status ", status, ")");
     blocks.resize(at + compressed);
     append_uint64(header, compressed);
@@ -115,9 +116,7 @@ void VtuDataArrays::add_values(std::ostream& out, const std::string& name, int c
       << "\" NumberOfComponents=\"" << components << "\" format=\"";
   std::string scratch;
   switch (format_) {
-    case VtuFormat::Ascii:
-      out << "ascii\">\n" << ascii(values, components) << "        </DataArray>\n";
-      return;
+    case VtuFormat::Ascii: out << "ascii\">\n" << ascii(values, components) << "        </DataArray>\n"; return;
     case VtuFormat::Base64: {
       // Header and values are one base64 stream: VTK decodes them together when uncompressed.
       std::string bytes;
@@ -136,8 +135,10 @@ void VtuDataArrays::add_values(std::ostream& out, const std::string& name, int c
       } else {
         append_uint64(array.header, bytes.size());
         // The caller's own memory is written as it is; a byte-swapped copy is kept.
-        if (scratch.empty()) array.values = bytes;
-        else array.kept = std::move(scratch);
+        if (scratch.empty())
+          array.values = bytes;
+        else
+          array.kept = std::move(scratch);
       }
       appended_bytes_ += array.header.size() + array.bytes().size();
       appended_.push_back(std::move(array));

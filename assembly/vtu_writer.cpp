@@ -95,7 +95,8 @@ Grid piece_of(const Grid& whole, std::span<const char> cells, std::vector<int>& 
   std::vector<int> new_index(size_t(whole.num_points), -1);
   for (size_t c = 0; c < cells.size(); ++c)
     if (cells[c])
-      for (std::int64_t k = c == 0 ? 0 : whole.offsets[c - 1]; k < whole.offsets[c]; ++k) new_index[size_t(whole.connectivity[size_t(k)])] = 0;
+      for (std::int64_t k = c == 0 ? 0 : whole.offsets[c - 1]; k < whole.offsets[c]; ++k)
+        new_index[size_t(whole.connectivity[size_t(k)])] = 0;
   kept.clear();
   for (int p = 0; p < whole.num_points; ++p)
     if (new_index[size_t(p)] == 0) {
@@ -104,7 +105,8 @@ Grid piece_of(const Grid& whole, std::span<const char> cells, std::vector<int>& 
     }
   Grid piece;
   piece.num_points = int(kept.size());
-  for (int p : kept) piece.points.insert(piece.points.end(), whole.points.begin() + 3 * p, whole.points.begin() + 3 * p + 3);
+  for (int p : kept)
+    piece.points.insert(piece.points.end(), whole.points.begin() + 3 * p, whole.points.begin() + 3 * p + 3);
   cells_kept.clear();
   for (size_t c = 0; c < cells.size(); ++c) {
     if (!cells[c]) continue;
@@ -134,12 +136,11 @@ void require_unique_name(const std::string& kind, const std::string& name, auto 
 
 VtuWriter::VtuWriter(const Mesh& mesh) : mesh_(mesh) {}
 
-void VtuWriter::add_point_field(const std::string& name, const FESpace& space,
-                                const Eigen::VectorXd& coefficients) {
+void VtuWriter::add_point_field(const std::string& name, const FESpace& space, const Eigen::VectorXd& coefficients) {
   require(&space.mesh() == &mesh_, "VtuWriter: point field '", name,
           "' lives on a different mesh than the one being written");
-  require(coefficients.size() == space.num_dofs(), "VtuWriter: point field '", name, "' has ",
-          coefficients.size(), " coefficients, its space has ", space.num_dofs(), " dofs");
+  require(coefficients.size() == space.num_dofs(), "VtuWriter: point field '", name, "' has ", coefficients.size(),
+          " coefficients, its space has ", space.num_dofs(), " dofs");
   const int field_components = space.num_components();
   // Vectors are padded to 3 components because ParaView only treats 3-component arrays as vectors.
   const int components = field_components == 1 ? 1 : 3;
@@ -184,8 +185,7 @@ void VtuWriter::add_point_data(const std::string& name, int components, std::vec
 void VtuWriter::add_mesh_node_data(const std::string& name, int components, std::vector<double> values,
                                    std::vector<bool> cells) {
   require_unique_name("point", name, point_data_);
-  require(components >= 1, "VtuWriter: point field '", name, "' needs at least one component, got ",
-          components);
+  require(components >= 1, "VtuWriter: point field '", name, "' needs at least one component, got ", components);
   require(values.size() == size_t(components) * mesh_.num_nodes(), "VtuWriter: point field '", name, "' has ",
           values.size(), " values, expected ", components, " x ", mesh_.num_nodes(), " nodes");
   point_data_.push_back({{name, components, std::move(values)}, true, std::move(cells)});
@@ -193,8 +193,7 @@ void VtuWriter::add_mesh_node_data(const std::string& name, int components, std:
 
 void VtuWriter::add_cell_data(const std::string& name, int components, std::vector<double> values) {
   require_unique_name("cell", name, cell_data_);
-  require(components >= 1, "VtuWriter: cell field '", name, "' needs at least one component, got ",
-          components);
+  require(components >= 1, "VtuWriter: cell field '", name, "' needs at least one component, got ", components);
   require(values.size() == size_t(components) * mesh_.num_cells(), "VtuWriter: cell field '", name, "' has ",
           values.size(), " values, expected ", components, " x ", mesh_.num_cells(), " cells");
   cell_data_.push_back({name, components, std::move(values)});
@@ -292,7 +291,8 @@ void VtuWriter::write_pvtu(const std::string& path, const std::vector<std::strin
     for (const PointArray& a : point_data_) declare(a);
     out << "    </PPointData>\n    <PCellData>\n";
     for (const Array& a : cell_data_) declare(a);
-    out << "    </PCellData>\n    <PPoints>\n      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+    out << "    </PCellData>\n    <PPoints>\n      <PDataArray type=\"Float64\" Name=\"Points\" "
+           "NumberOfComponents=\"3\"/>\n"
         << "    </PPoints>\n";
     for (const std::string& piece : pieces) out << "    <Piece Source=\"" << xml_escape(piece) << "\"/>\n";
     out << "  </PUnstructuredGrid>\n</VTKFile>\n";
@@ -307,8 +307,7 @@ void write_pvd(const std::string& path, const std::vector<std::pair<double, std:
         << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
         << "  <Collection>\n";
     for (const auto& [time, file] : steps)
-      out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << xml_escape(file)
-          << "\"/>\n";
+      out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"0\" file=\"" << xml_escape(file) << "\"/>\n";
     out << "  </Collection>\n</VTKFile>\n";
   });
 }

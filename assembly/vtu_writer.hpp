@@ -57,8 +57,7 @@ class VtuWriter {
     std::vector<bool> cells;
   };
 
-  void add_mesh_node_data(const std::string& name, int components, std::vector<double> values,
-                          std::vector<bool> cells);
+  void add_mesh_node_data(const std::string& name, int components, std::vector<double> values, std::vector<bool> cells);
   std::vector<double> at_quadratic_points(const PointArray& array) const;
 
   const Mesh& mesh_;

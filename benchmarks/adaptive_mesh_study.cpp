@@ -44,11 +44,12 @@ struct Run {
   double seconds = 0;
 };
 
-std::unique_ptr<Run> run_on(const std::string& scene_file, int nx, int steps, std::shared_ptr<const Mesh> mesh = nullptr) {
+std::unique_ptr<Run> run_on(const std::string& scene_file, int nx, int steps,
+                            std::shared_ptr<const Mesh> mesh = nullptr) {
   auto r = std::make_unique<Run>();
-  r->scene = std::make_unique<Scene>(load_scene_file(
-      scene_file, {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(nx / 3), "time.steps=" + std::to_string(steps),
-                   "time.error_estimate=none"}));
+  r->scene = std::make_unique<Scene>(
+      load_scene_file(scene_file, {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(nx / 3),
+                                   "time.steps=" + std::to_string(steps), "time.error_estimate=none"}));
   if (mesh) r->scene->spec.mesh = std::move(mesh);
   r->run = std::make_unique<FoundationRun>(*r->scene, find_foundation(*r->scene, "conductive"));
   const auto start = std::chrono::steady_clock::now();
@@ -62,7 +63,9 @@ std::unique_ptr<Run> run_on(const std::string& scene_file, int nx, int steps, st
   return r;
 }
 
-GradientMeasure measure_of(const std::string& field) { return field == "phi" ? GradientMeasure::Gradient : GradientMeasure::Strain; }
+GradientMeasure measure_of(const std::string& field) {
+  return field == "phi" ? GradientMeasure::Gradient : GradientMeasure::Strain;
+}
 const char* weight_of(const std::string& field) { return field == "u" ? "B" : field == "v" ? "A" : "beta"; }
 
 struct Row {
@@ -90,11 +93,12 @@ Row measure(const std::string& kind, const Run& run, const Model& reference) {
     };
     const Eigen::MatrixXd& W = reference.constant(weight_of(field));
     const int width = reference.space(field).num_components() * reference.mesh().dim();
-    const double norm = energy_norm_difference(reference.space(field), reference.values(field),
-                                               [&](const double*, double* out) { std::fill(out, out + width, 0.0); },
-                                               measure_of(field), W);
-    row.error[f] = energy_norm_difference(reference.space(field), reference.values(field), coarse_gradient,
-                                          measure_of(field), W) / norm;
+    const double norm = energy_norm_difference(
+        reference.space(field), reference.values(field),
+        [&](const double*, double* out) { std::fill(out, out + width, 0.0); }, measure_of(field), W);
+    row.error[f] =
+        energy_norm_difference(reference.space(field), reference.values(field), coarse_gradient, measure_of(field), W) /
+        norm;
     row.estimate[f] = estimate.field(field)->relative();
   }
   return row;
@@ -111,8 +115,10 @@ int main(int argc, char** argv) {
   int reference_nx = 240, steps = 40;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
-    if (flag == "--reference-nx") reference_nx = std::atoi(argv[i + 1]);
-    else if (flag == "--steps") steps = std::atoi(argv[i + 1]);
+    if (flag == "--reference-nx")
+      reference_nx = std::atoi(argv[i + 1]);
+    else if (flag == "--steps")
+      steps = std::atoi(argv[i + 1]);
     else {
       std::fprintf(stderr, "unknown option '%s'\n", flag.c_str());
       return 2;
@@ -126,7 +132,8 @@ int main(int argc, char** argv) {
 
   std::ofstream csv(out / "adaptive_mesh.csv");
   csv << "kind,cells,dofs,wall_s,err_u,est_u,err_v,est_v,err_phi,est_phi,error\n";
-  std::printf("| refinement | cells | dofs | wall s | u: error, estimate | v: error, estimate | phi: error, estimate |\n");
+  std::printf(
+      "| refinement | cells | dofs | wall s | u: error, estimate | v: error, estimate | phi: error, estimate |\n");
   std::printf("|---|---:|---:|---:|---|---|---|\n");
   const auto report = [&](const Row& r) {
     csv << r.kind << ',' << r.cells << ',' << r.dofs << ',' << r.seconds;
@@ -150,7 +157,8 @@ int main(int argc, char** argv) {
     report(measure("adaptive", *run, reference->run->model()));
     if (run->result.ndof >= finest_dofs) break;
     const Model& m = run->run->model();
-    const MeshBisection refined = bisect(m.mesh(), dorfler_marking(piezo_space_error(m).relative_cell_indicators(), 0.5), edges);
+    const MeshBisection refined =
+        bisect(m.mesh(), dorfler_marking(piezo_space_error(m).relative_cell_indicators(), 0.5), edges);
     edges = RefinementEdge::OppositeVertexZero;
     run = run_on(scene, 15, steps, refined.mesh);
   }

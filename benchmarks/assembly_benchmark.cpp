@@ -33,10 +33,9 @@ void BM_ElasticityTangent(benchmark::State& state) {
   const bool hand = state.range(3) == 1;
   auto mesh = mesh_for(dim, n);
   FESpace space(mesh, order, dim);
-  std::shared_ptr<const Term> term =
-      hand ? std::make_shared<const StrainStiffnessTerm>("elasticity (hand)", "u", "u", "C",
-                                                          isotropic_stiffness(dim, 1.2, 0.8))
-           : generic_term();
+  std::shared_ptr<const Term> term = hand ? std::make_shared<const StrainStiffnessTerm>(
+                                                "elasticity (hand)", "u", "u", "C", isotropic_stiffness(dim, 1.2, 0.8))
+                                          : generic_term();
   TermAssembly assembly(term, "all", {&space});
   const Eigen::VectorXd u = Eigen::VectorXd::Zero(space.num_dofs());
   const Eigen::VectorXd* values[] = {&u};

@@ -30,7 +30,8 @@ constexpr double kCellLength = 0.03 / 60;
 
 struct Run {
   int completed = 0, dofs = 0, contact_dofs = 0, newton_iterations = 0, factorizations = 0;
-  double wall = 0, factorize = 0, solve = 0, dense = 0, linear_algebra = 0, predicted_full = 0, predicted_schur = 0, predicted_krylov = 0, schur_mib = 0;
+  double wall = 0, factorize = 0, solve = 0, dense = 0, linear_algebra = 0, predicted_full = 0, predicted_schur = 0,
+         predicted_krylov = 0, schur_mib = 0;
   long hwm_before = 0, hwm = 0;
   double per_iteration() const { return linear_algebra / std::max(newton_iterations, 1); }
 };
@@ -44,7 +45,7 @@ std::vector<std::string> overrides(int nx, int ny) {
   std::snprintf(probes, sizeof probes, "output.probes={\"corner\": [%.10g, 0.01], \"center\": [%.10g, 0.005]}", length,
                 length / 2);
   std::snprintf(grid, sizeof grid, "output.grid.x=[0,%.10g,31]", length);
-  return {x, "mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny), "time.steps=3", "time.T=0.003", probes,
+  return {x,   "mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(ny), "time.steps=3", "time.T=0.003", probes,
           grid};
 }
 
@@ -70,8 +71,7 @@ int run_child(const std::vector<std::string>& args) {
   std::printf("%d %d %d %d %d %.6f %.6f %.6f %.6f %.6f %.6g %.6g %.6g %ld %ld\n", r.completed ? 1 : 0, r.ndof,
               int(run.model().nonlinear_dofs().size()), r.newton_iterations_total, r.factorizations, r.wall_seconds,
               r.factorize_seconds, r.solve_seconds, r.condensation_seconds, costs.full_seconds, costs.schur_seconds,
-              costs.krylov_seconds,
-              costs.schur_bytes / 1048576.0, hwm_before, study::peak_rss_kib());
+              costs.krylov_seconds, costs.schur_bytes / 1048576.0, hwm_before, study::peak_rss_kib());
   return r.completed ? 0 : 1;
 }
 
@@ -84,10 +84,11 @@ int main(int argc, char** argv) {
   const double budget = argc > 3 ? std::stod(argv[3]) : 300;
   const int ny = argc > 4 ? std::stoi(argv[4]) : 2;
   CsvLog csv(csv_path, {"nx", "ny", "dofs", "contact_dofs", "path", "completed", "newton_iterations", "factorizations",
-                        "wall_s", "linear_algebra_s", "per_iteration_s", "predicted_full_s", "predicted_schur_s", "predicted_krylov_s",
-                        "schur_dense_mib", "rss_increment_mib"});
-  std::printf("| contact dofs | dofs | path | Newton its | factorisations | wall [s] | factorise / solve / dense [s] | "
-              "per iteration [ms] | predicted [ms] | RSS increment [MiB] |\n|--:|--:|---|--:|--:|--:|--:|--:|--:|--:|\n");
+                        "wall_s", "linear_algebra_s", "per_iteration_s", "predicted_full_s", "predicted_schur_s",
+                        "predicted_krylov_s", "schur_dense_mib", "rss_increment_mib"});
+  std::printf(
+      "| contact dofs | dofs | path | Newton its | factorisations | wall [s] | factorise / solve / dense [s] | "
+      "per iteration [ms] | predicted [ms] | RSS increment [MiB] |\n|--:|--:|---|--:|--:|--:|--:|--:|--:|--:|\n");
   std::fflush(stdout);
   for (int nx = 50; 2 * nx <= max_m; nx *= 10)
     for (int p = 0; p < int(std::size(kPaths)); ++p) {
@@ -109,10 +110,10 @@ int main(int argc, char** argv) {
       }
       const study::ChildOutput child = study::run_child(args);
       Run r;
-      if (!child.ran || std::sscanf(child.line.c_str(), kRunFormat, &r.completed, &r.dofs, &r.contact_dofs,
-                                    &r.newton_iterations, &r.factorizations, &r.wall, &r.factorize, &r.solve,
-                                    &r.dense, &r.predicted_full, &r.predicted_schur, &r.predicted_krylov, &r.schur_mib,
-                                    &r.hwm_before, &r.hwm) != 15) {
+      if (!child.ran ||
+          std::sscanf(child.line.c_str(), kRunFormat, &r.completed, &r.dofs, &r.contact_dofs, &r.newton_iterations,
+                      &r.factorizations, &r.wall, &r.factorize, &r.solve, &r.dense, &r.predicted_full,
+                      &r.predicted_schur, &r.predicted_krylov, &r.schur_mib, &r.hwm_before, &r.hwm) != 15) {
         std::printf("| %d | | %s | FAILED: the child exited with status %d | | | | | | |\n", int(m), path.c_str(),
                     child.status);
         continue;
@@ -121,7 +122,8 @@ int main(int argc, char** argv) {
       const double predicted = p == 0 ? r.predicted_schur : p == 1 ? r.predicted_krylov : r.predicted_full;
       std::printf("| %d | %d | %s%s | %d | %d | %.2f | %.2f / %.2f / %.2f | %.3f | %.3f | %.0f |\n", r.contact_dofs,
                   r.dofs, path.c_str(), r.completed ? "" : " (STOPPED)", r.newton_iterations, r.factorizations, r.wall,
-                  r.factorize, r.solve, r.dense, 1e3 * r.per_iteration(), 1e3 * predicted, (r.hwm - r.hwm_before) / 1024.0);
+                  r.factorize, r.solve, r.dense, 1e3 * r.per_iteration(), 1e3 * predicted,
+                  (r.hwm - r.hwm_before) / 1024.0);
       std::fflush(stdout);
       csv.row({double(nx), double(ny), double(r.dofs), double(r.contact_dofs), double(p), double(r.completed),
                double(r.newton_iterations), double(r.factorizations), r.wall, r.linear_algebra, r.per_iteration(),

@@ -28,8 +28,8 @@
 #include <vector>
 
 #include "models/output/csv_log.hpp"
-#include "models/solvers/newton.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "models/solvers/newton.hpp"
 #include "support/child_process.hpp"
 
 namespace {
@@ -45,7 +45,7 @@ struct Run {
   int completed = 0, dofs = 0, steps = 0, newton_iterations = 0, factorizations = 0;
   double wall = 0, assembly = 0, factorize = 0, solve = 0, condensation = 0, ux_corner = 0;
   double cpu_user = 0, cpu_system = 0;  // of the run (getrusage): on a loaded machine, steadier than wall time
-  long minor_faults = 0;                 // of the run: pages the allocator mapped and touched
+  long minor_faults = 0;                // of the run: pages the allocator mapped and touched
   long hwm_before = 0, hwm = 0;
   long rss_increment() const { return hwm - hwm_before; }
   // Model build, the initial potential's solve (not in the phases) and the runner's own work.
@@ -106,12 +106,31 @@ int main(int argc, char** argv) {
   std::snprintf(end_time, sizeof end_time, "%.15g", shipped.end_time / shipped.steps * steps);
 
   // "path" in the CSV: the index in kPaths.
-  CsvLog csv(csv_path, {"order", "nx", "ny", "path", "dofs", "completed", "steps", "newton_iterations",
-                        "factorizations", "wall_s", "assembly_s", "factorize_s", "solve_s", "condensation_s",
-                        "ux_corner", "cpu_user_s", "cpu_system_s", "minor_page_faults", "vmhwm_before_model_kib",
-                        "vmhwm_kib", "rss_increment_kib"});
-  std::printf("| order | mesh | dofs | path | Newton its | factorisations | wall [s] | CPU [s] | assembly [s] | factorise [s] | "
-              "solve [s] | condensation [s] | other [s] | peak RSS [MiB] | RSS increment [MiB] |\n");
+  CsvLog csv(csv_path, {"order",
+                        "nx",
+                        "ny",
+                        "path",
+                        "dofs",
+                        "completed",
+                        "steps",
+                        "newton_iterations",
+                        "factorizations",
+                        "wall_s",
+                        "assembly_s",
+                        "factorize_s",
+                        "solve_s",
+                        "condensation_s",
+                        "ux_corner",
+                        "cpu_user_s",
+                        "cpu_system_s",
+                        "minor_page_faults",
+                        "vmhwm_before_model_kib",
+                        "vmhwm_kib",
+                        "rss_increment_kib"});
+  std::printf(
+      "| order | mesh | dofs | path | Newton its | factorisations | wall [s] | CPU [s] | assembly [s] | factorise [s] "
+      "| "
+      "solve [s] | condensation [s] | other [s] | peak RSS [MiB] | RSS increment [MiB] |\n");
   std::printf("|--:|---|--:|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   std::fflush(stdout);
 
@@ -135,8 +154,8 @@ int main(int argc, char** argv) {
           }
           const double predicted = last.wall * std::pow(double(nx) * ny / (double(last_nx) * (last_nx / 3)), p);
           if (predicted > budget) {
-            std::printf("| %d | %d x %d | | %s | skipped: predicted %.0f s > budget %.0f s | | | | | | | | | | |\n", order,
-                        nx, ny, path.c_str(), predicted, budget);
+            std::printf("| %d | %d x %d | | %s | skipped: predicted %.0f s > budget %.0f s | | | | | | | | | | |\n",
+                        order, nx, ny, path.c_str(), predicted, budget);
             std::fflush(stdout);
             continue;
           }
@@ -155,27 +174,45 @@ int main(int argc, char** argv) {
         }
         const study::ChildOutput child = study::run_child(args);
         Run r;
-        if (!child.ran || std::sscanf(child.line.c_str(), kRunFormat, &r.completed, &r.dofs, &r.steps,
-                                      &r.newton_iterations, &r.factorizations, &r.wall, &r.assembly, &r.factorize,
-                                      &r.solve, &r.condensation, &r.ux_corner, &r.cpu_user, &r.cpu_system,
-                                      &r.minor_faults, &r.hwm_before, &r.hwm) != 16) {
-          std::printf("| %d | %d x %d | | %s | FAILED: the child exited with status %d | | | | | | | | | | |\n", order, nx,
-                      ny, path.c_str(), child.status);
+        if (!child.ran ||
+            std::sscanf(child.line.c_str(), kRunFormat, &r.completed, &r.dofs, &r.steps, &r.newton_iterations,
+                        &r.factorizations, &r.wall, &r.assembly, &r.factorize, &r.solve, &r.condensation, &r.ux_corner,
+                        &r.cpu_user, &r.cpu_system, &r.minor_faults, &r.hwm_before, &r.hwm) != 16) {
+          std::printf("| %d | %d x %d | | %s | FAILED: the child exited with status %d | | | | | | | | | | |\n", order,
+                      nx, ny, path.c_str(), child.status);
           std::fflush(stdout);
           ++failures;
           continue;
         }
         failures += !r.completed;
         done.emplace_back(nx, r);
-        csv.row({double(order), double(nx), double(ny), double(path_index), double(r.dofs), double(r.completed),
-                 double(r.steps), double(r.newton_iterations), double(r.factorizations), r.wall, r.assembly,
-                 r.factorize, r.solve, r.condensation, r.ux_corner, r.cpu_user, r.cpu_system,
-                 double(r.minor_faults), double(r.hwm_before), double(r.hwm), double(r.rss_increment())});
-        std::printf("| %d | %d x %d | %d | %s%s | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f | "
-                    "%.1f |\n",
-                    order, nx, ny, r.dofs, path.c_str(), r.completed ? "" : " (STOPPED)", r.newton_iterations,
-                    r.factorizations, r.wall, r.cpu_user + r.cpu_system, r.assembly, r.factorize, r.solve, r.condensation, r.other(),
-                    r.hwm / 1024.0, r.rss_increment() / 1024.0);
+        csv.row({double(order),
+                 double(nx),
+                 double(ny),
+                 double(path_index),
+                 double(r.dofs),
+                 double(r.completed),
+                 double(r.steps),
+                 double(r.newton_iterations),
+                 double(r.factorizations),
+                 r.wall,
+                 r.assembly,
+                 r.factorize,
+                 r.solve,
+                 r.condensation,
+                 r.ux_corner,
+                 r.cpu_user,
+                 r.cpu_system,
+                 double(r.minor_faults),
+                 double(r.hwm_before),
+                 double(r.hwm),
+                 double(r.rss_increment())});
+        std::printf(
+            "| %d | %d x %d | %d | %s%s | %d | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.1f | "
+            "%.1f |\n",
+            order, nx, ny, r.dofs, path.c_str(), r.completed ? "" : " (STOPPED)", r.newton_iterations, r.factorizations,
+            r.wall, r.cpu_user + r.cpu_system, r.assembly, r.factorize, r.solve, r.condensation, r.other(),
+            r.hwm / 1024.0, r.rss_increment() / 1024.0);
         std::fflush(stdout);
       }
 
@@ -183,8 +220,9 @@ int main(int argc, char** argv) {
               csv_path.c_str());
   std::printf("Exponent p of cost ~ dofs^p, least squares on log-log over the completed runs with dofs >= %.0e:\n\n",
               kMinFitDofs);
-  std::printf("| order | path | dofs range (runs) | wall | CPU | assembly | factorise | solve | condensation | "
-              "RSS increment |\n");
+  std::printf(
+      "| order | path | dofs range (runs) | wall | CPU | assembly | factorise | solve | condensation | "
+      "RSS increment |\n");
   std::printf("|--:|---|---|--:|--:|--:|--:|--:|--:|--:|\n");
   for (const auto& [key, done] : runs) {
     std::vector<const Run*> fitted;

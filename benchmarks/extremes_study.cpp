@@ -51,15 +51,17 @@ double penetration(const fs::path& gamma_c) {
 int main(int argc, char** argv) {
   const std::string csv_path = argc > 1 ? argv[1] : "extremes.csv";
   std::vector<std::string> extra, only;
-  for (int i = 2; i < argc; ++i) (std::string(argv[i]).find('=') == std::string::npos ? only : extra).push_back(argv[i]);
+  for (int i = 2; i < argc; ++i)
+    (std::string(argv[i]).find('=') == std::string::npos ? only : extra).push_back(argv[i]);
   const std::string scene_path = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
   const fs::path scratch = fs::temp_directory_path() / ("extremes_study_" + std::to_string(getpid()));
 
   std::ofstream csv(csv_path);
   csv << "case,order,foundation,outcome,steps,ndof,newton_total,newton_max,wall_s,max_abs_ux,max_abs_uy,"
          "penetration,phi_min,phi_max,ux_corner,uy_corner,phi_center,n_contact_nodes,n_slip_nodes,message\n";
-  std::printf("%-26s %2s %-10s %-9s %5s %6s %7s %4s %8s %11s %11s %11s %11s  %s\n", "case", "p", "foundation", "outcome",
-              "steps", "ndof", "newton", "max", "wall_s", "max|uy|", "penetration", "phi_min", "phi_max", "message");
+  std::printf("%-26s %2s %-10s %-9s %5s %6s %7s %4s %8s %11s %11s %11s %11s  %s\n", "case", "p", "foundation",
+              "outcome", "steps", "ndof", "newton", "max", "wall_s", "max|uy|", "penetration", "phi_min", "phi_max",
+              "message");
   int failures = 0;
   for (const int order : {1, 2}) {
     for (const pc::testing::ExtremeCase& c : pc::testing::extreme_cases()) {

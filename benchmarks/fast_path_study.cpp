@@ -23,8 +23,9 @@ int main(int argc, char** argv) {
   const std::string out = argc > 3 ? argv[3] : "fast_path.csv";
   CsvLog csv(out, {"nx", "ny", "ndof", "path", "newton_iterations", "factorizations", "wall_s", "assembly_s",
                    "factorize_s", "solve_s", "condensation_s", "ux_corner", "iteration_in_solves"});
-  std::printf("| mesh | dofs | path | Newton its | factorisations | wall [s] | assembly | factorise | solve | condensation | "
-              "iteration [solves] | speed-up |\n");
+  std::printf(
+      "| mesh | dofs | path | Newton its | factorisations | wall [s] | assembly | factorise | solve | condensation | "
+      "iteration [solves] | speed-up |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int nx = 30; nx <= max_nx; nx *= 2) {
     double plain_wall = 0, one_solve = 0;
@@ -32,12 +33,12 @@ int main(int argc, char** argv) {
     for (size_t p = 0; p < paths.size(); ++p) {
       const std::string& path = paths[p];
       const bool condensed = path != "plain";
-      const Scene scene = load_scene_file(std::string(PIEZOCONTACT_SOURCE_DIR) + "/scenes/paper2d.json",
-                                          {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(nx / 3),
-                                           "time.steps=" + std::to_string(steps),
-                                           "time.T=" + std::to_string(0.2 * steps / 200.0),
-                                           std::string("solver.condensed=") + (condensed ? "true" : "false"),
-                                           "solver.condensation=\"" + (condensed ? path : "schur") + "\""});
+      const Scene scene =
+          load_scene_file(std::string(PIEZOCONTACT_SOURCE_DIR) + "/scenes/paper2d.json",
+                          {"mesh.nx=" + std::to_string(nx), "mesh.ny=" + std::to_string(nx / 3),
+                           "time.steps=" + std::to_string(steps), "time.T=" + std::to_string(0.2 * steps / 200.0),
+                           std::string("solver.condensed=") + (condensed ? "true" : "false"),
+                           "solver.condensation=\"" + (condensed ? path : "schur") + "\""});
       const FoundationRunResult r = run_foundation(scene, find_foundation(scene, "conductive"), "", false);
       if (!condensed) {
         plain_wall = r.wall_seconds;

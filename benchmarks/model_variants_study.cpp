@@ -29,7 +29,8 @@ using namespace pc;
 using study::Clock;
 using study::seconds_since;
 const char* kVariants[] = {"a_mechanical", "b_insulated", "c_conductive", "d_quasistatic"};
-const std::string kScene = (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes/paper2d.json").string();
+const std::string kScene =
+    (std::filesystem::path(__FILE__).parent_path().parent_path() / "scenes/paper2d.json").string();
 
 PiezoContactSpec variant_spec(const Scene& scene, const std::string& variant) {
   PiezoContactSpec spec = scene.spec;
@@ -79,8 +80,8 @@ int run_child(const std::string& variant, int nx, int ny, int steps) {
   const RunSummary run = Stepper(options).run(m, *built.scheme, newton, callbacks);
   const double run_seconds = seconds_since(run_start);
   std::printf("%d %d %zu %d %d %d %d %.6f %.6f %.6f %.6f %.6f %.6f %ld %ld\n", run.completed ? 1 : 0, dofs,
-              m.bricks().size(), m.layout().size(), run.steps, run.newton_iterations_total, run.cutbacks,
-              build_seconds, run_seconds, assembly, factorize, solve, condensation, hwm_before, study::peak_rss_kib());
+              m.bricks().size(), m.layout().size(), run.steps, run.newton_iterations_total, run.cutbacks, build_seconds,
+              run_seconds, assembly, factorize, solve, condensation, hwm_before, study::peak_rss_kib());
   return run.completed ? 0 : 1;
 }
 
@@ -103,21 +104,22 @@ int main(int argc, char** argv) {
   std::ofstream csv(csv_path);
   csv << "variant,mesh,completed,dofs,bricks,free_dofs,steps,newton_iterations,cutbacks,build_s,run_s,assembly_s,"
          "factorize_s,solve_s,condensation_s,vmhwm_before_model_kib,vmhwm_kib\n";
-  std::printf("| variant | mesh | dofs | bricks | Newton its | cutbacks | run [s] | assembly [s] | factorize [s] | "
-              "solve [s] | condense [s] | peak RSS [MiB] | RSS model+run [MiB] |\n");
+  std::printf(
+      "| variant | mesh | dofs | bricks | Newton its | cutbacks | run [s] | assembly [s] | factorize [s] | "
+      "solve [s] | condense [s] | peak RSS [MiB] | RSS model+run [MiB] |\n");
   std::printf("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   int failures = 0;
   for (const auto& [nx, ny] : meshes) {
     const std::string mesh = std::to_string(nx) + "x" + std::to_string(ny);
     for (const char* variant : kVariants) {
-      const study::ChildOutput child = study::run_child(
-          {"--child", variant, std::to_string(nx), std::to_string(ny), std::to_string(steps)});
+      const study::ChildOutput child =
+          study::run_child({"--child", variant, std::to_string(nx), std::to_string(ny), std::to_string(steps)});
       int completed = 0, dofs = 0, bricks = 0, free_dofs = 0, done = 0, iterations = 0, cutbacks = 0;
       double build = 0, run = 0, assembly = 0, factorize = 0, solve = 0, condensation = 0;
       long hwm_before = 0, hwm = 0;
-      if (!child.ran || std::sscanf(child.line.c_str(), "%d %d %d %d %d %d %d %lf %lf %lf %lf %lf %lf %ld %ld", &completed, &dofs,
-                               &bricks, &free_dofs, &done, &iterations, &cutbacks, &build, &run, &assembly, &factorize,
-                               &solve, &condensation, &hwm_before, &hwm) != 15) {
+      if (!child.ran || std::sscanf(child.line.c_str(), "%d %d %d %d %d %d %d %lf %lf %lf %lf %lf %lf %ld %ld",
+                                    &completed, &dofs, &bricks, &free_dofs, &done, &iterations, &cutbacks, &build, &run,
+                                    &assembly, &factorize, &solve, &condensation, &hwm_before, &hwm) != 15) {
         std::fprintf(stderr, "%s on %s: the child failed (status %d)\n", variant, mesh.c_str(), child.status);
         ++failures;
         continue;

@@ -148,13 +148,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cannot write %s\n", out.c_str());
     return 1;
   }
-  std::fprintf(csv, "scene,sets,matrix,n,nonzeros,factorisation,ordering,ordering_used,icntl14,analysis_s,"
-                    "factorization_s,solve_s,entries,flops,memory_mb,relative_residual,failure\n");
+  std::fprintf(csv,
+               "scene,sets,matrix,n,nonzeros,factorisation,ordering,ordering_used,icntl14,analysis_s,"
+               "factorization_s,solve_s,entries,flops,memory_mb,relative_residual,failure\n");
   std::string set_text;
   for (const std::string& s : sets) set_text += (set_text.empty() ? "" : " ") + s;
-  std::printf("%s %s\n\n| matrix | factorisation | ICNTL(7) (used) | ICNTL(14) | analysis | factorisation | solve | entries | "
-              "GFlop | MUMPS MB |\n|---|---|---|---|---|---|---|---|---|---|\n",
-              scene_file.c_str(), set_text.c_str());
+  std::printf(
+      "%s %s\n\n| matrix | factorisation | ICNTL(7) (used) | ICNTL(14) | analysis | factorisation | solve | entries | "
+      "GFlop | MUMPS MB |\n|---|---|---|---|---|---|---|---|---|---|\n",
+      scene_file.c_str(), set_text.c_str());
   for (const auto& [matrix_name, matrix] : {std::pair<const char*, const CsrMatrix*>{"linear part", &linear},
                                             std::pair<const char*, const CsrMatrix*>{"whole Jacobian", &full}}) {
     const std::optional<Eigen::VectorXd> scale = symmetrizing_row_scale(*matrix);
@@ -171,9 +173,10 @@ int main(int argc, char** argv) {
                     m.failure.c_str());
         continue;
       }
-      std::printf("| %s (%d dofs) | %s | %s (%s) | %d | %.1f ms | %.1f ms | %.2f ms | %.3g | %.2f | %d |\n", matrix_name,
-                  int(matrix->rows()), kind, setting.ordering_name, ordering_name(m.ordering_used), setting.relaxation,
-                  1e3 * m.analysis, 1e3 * m.factorization, 1e3 * m.solve, m.entries, 1e-9 * m.flops, m.memory_mb);
+      std::printf("| %s (%d dofs) | %s | %s (%s) | %d | %.1f ms | %.1f ms | %.2f ms | %.3g | %.2f | %d |\n",
+                  matrix_name, int(matrix->rows()), kind, setting.ordering_name, ordering_name(m.ordering_used),
+                  setting.relaxation, 1e3 * m.analysis, 1e3 * m.factorization, 1e3 * m.solve, m.entries, 1e-9 * m.flops,
+                  m.memory_mb);
     }
   }
   std::fclose(csv);

@@ -82,9 +82,12 @@ struct Settings {
   std::string condensation;  // schur | columns | plain (solver.condensed = false)
 
   std::vector<std::string> overrides() const {
-    std::vector<std::string> o = {"mesh.nx=" + std::to_string(nx),     "mesh.ny=" + std::to_string(ny),
-                                  "mesh.order=" + std::to_string(order), "time.steps=" + std::to_string(steps),
-                                  "time.scheme=" + scheme,             "contact.c_nu=" + number(c_nu),
+    std::vector<std::string> o = {"mesh.nx=" + std::to_string(nx),
+                                  "mesh.ny=" + std::to_string(ny),
+                                  "mesh.order=" + std::to_string(order),
+                                  "time.steps=" + std::to_string(steps),
+                                  "time.scheme=" + scheme,
+                                  "contact.c_nu=" + number(c_nu),
                                   "solver.relative_tolerance=" + number(tolerance),
                                   "solver.linear=" + linear,
                                   "output.vtu_every=1000000"};  // the first and last VTU only
@@ -99,8 +102,8 @@ struct Settings {
   // One word per setting, no commas (a CSV field and a directory name once spaces become '_').
   std::string label() const {
     return std::to_string(nx) + "x" + std::to_string(ny) + " P" + std::to_string(order) + " " +
-           (adaptive > 0 ? "adaptive=" + number(adaptive) : std::to_string(steps) + "steps") + " " + scheme + " c_nu=" + number(c_nu) + " tol=" + number(tolerance) + " " +
-           linear + " " + condensation;
+           (adaptive > 0 ? "adaptive=" + number(adaptive) : std::to_string(steps) + "steps") + " " + scheme +
+           " c_nu=" + number(c_nu) + " tol=" + number(tolerance) + " " + linear + " " + condensation;
   }
   static std::string number(double x) {
     char text[32];
@@ -177,7 +180,9 @@ std::vector<Settings> axis_settings(const std::string& axis, const Settings& bas
         const TargetErrorChoice c = choose_for_target_error(scene, {kFoundation}, false);
         std::printf("target %g: %s (pilots and choice %.2f s)\n", target, c.explanation.c_str(),
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count());
-        vary([&](Settings& s) { s.nx = c.nx, s.ny = c.ny, s.order = c.order, s.adaptive = c.tolerance, s.scheme = c.scheme; });
+        vary([&](Settings& s) {
+          s.nx = c.nx, s.ny = c.ny, s.order = c.order, s.adaptive = c.tolerance, s.scheme = c.scheme;
+        });
       } catch (const Error& e) {
         std::printf("target %g: refused: %s\n", target, e.what());
       }
@@ -185,8 +190,8 @@ std::vector<Settings> axis_settings(const std::string& axis, const Settings& bas
     }
   return runs;
 }
-const std::vector<std::string> kAxes = {"mesh", "order", "steps", "scheme", "c_nu", "tolerance", "condensation",
-                                        "linear", "joint", "target"};
+const std::vector<std::string> kAxes = {"mesh",      "order",        "steps",  "scheme", "c_nu",
+                                        "tolerance", "condensation", "linear", "joint",  "target"};
 
 // ------------------------------------------------------------------------------------------- child
 // One run into `dir`; prints its numbers on one line for the parent, the run's message last.
@@ -372,8 +377,8 @@ void write_row(std::ofstream& csv, const std::string& axis, const Settings& s, b
                 s.condensation.c_str(), r.completed ? 1 : 0, r.dofs, r.steps, r.newton, r.newton_max, r.factorizations,
                 r.wall, r.assembly, r.factorize, r.solve, r.condensation, r.rss_mib, r.err_u, r.err_v, r.err_phi,
                 r.err_uy_t, r.err_phi_t, r.error());
-  csv << axis << "," << s.label() << "," << (baseline ? 1 : 0) << "," << numbers << "," << csv_text(r.message)
-      << "\n" << std::flush;
+  csv << axis << "," << s.label() << "," << (baseline ? 1 : 0) << "," << numbers << "," << csv_text(r.message) << "\n"
+      << std::flush;
 }
 
 void print_row(const std::string& axis, const Settings& s, const Result& r, bool as_above) {
@@ -460,11 +465,13 @@ int main(int argc, char** argv) {
 
   const Settings base = baseline();
   std::ofstream csv = open_csv(out / "speed_accuracy.csv");
-  std::printf("\nbaseline: %s; wall time: the fastest of %d runs; errors relative to the reference (c_nu axis: the "
-              "reference has c_nu = %g, so these errors include the modelling error of the penalty)\n\n",
-              base.label().c_str(), repeat, reference_settings().c_nu);
-  std::printf("| axis | settings | dofs | Newton its | wall [s] | peak RSS [MiB] | err u | err v | err phi | "
-              "err uy_corner(t) | err phi_center(t) |\n");
+  std::printf(
+      "\nbaseline: %s; wall time: the fastest of %d runs; errors relative to the reference (c_nu axis: the "
+      "reference has c_nu = %g, so these errors include the modelling error of the penalty)\n\n",
+      base.label().c_str(), repeat, reference_settings().c_nu);
+  std::printf(
+      "| axis | settings | dofs | Newton its | wall [s] | peak RSS [MiB] | err u | err v | err phi | "
+      "err uy_corner(t) | err phi_center(t) |\n");
   std::printf("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   std::map<std::string, Result> done;  // by label: a setting already run in this invocation
   int stopped = 0;

@@ -175,8 +175,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> columns = {"nx", "ny", "ndof", "steps", "newton_iterations", "factorizations", "wall_s"};
   for (const RunPhase& p : runs.front().phases) columns.push_back(p.name + "_s");
   for (const char* c : {"one_solve_s", "one_solve_back_to_back_s", "solve_per_iteration_s", "iteration_in_solves",
-                        "one_iteration_step_in_solves", "one_iteration_steps", "own_solve_s",
-                        "iteration_in_own_solves", "one_iteration_step_in_own_solves"})
+                        "one_iteration_step_in_solves", "one_iteration_steps", "own_solve_s", "iteration_in_own_solves",
+                        "one_iteration_step_in_own_solves"})
     columns.push_back(c);
   CsvLog csv(out, columns);
 
@@ -215,21 +215,23 @@ int main(int argc, char** argv) {
     return text("%.2f", b.result.solve_seconds / b.result.steps / b.one_solve.in_iteration);
   });
   row("Newton iteration [solves]", [&](const Breakdown& b) { return text("%.2f", b.iteration_in_solves); });
-  row("step of one Newton iteration [solves]", [&](const Breakdown& b) {
-    return text("%.2f (median of %d)", b.one_iteration_step, b.one_iteration_steps);
-  });
-  row("the run's own solve pair (median over those steps)", [&](const Breakdown& b) {
-    return text("%.2f ms", 1e3 * b.own_solve);
-  });
+  row("step of one Newton iteration [solves]",
+      [&](const Breakdown& b) { return text("%.2f (median of %d)", b.one_iteration_step, b.one_iteration_steps); });
+  row("the run's own solve pair (median over those steps)",
+      [&](const Breakdown& b) { return text("%.2f ms", 1e3 * b.own_solve); });
   row("Newton iteration [own solves]", [&](const Breakdown& b) { return text("%.2f", b.iteration_in_own_solves); });
-  row("step of one Newton iteration [own solves]", [&](const Breakdown& b) {
-    return text("%.2f", b.one_iteration_step_in_own_solves);
-  });
+  row("step of one Newton iteration [own solves]",
+      [&](const Breakdown& b) { return text("%.2f", b.one_iteration_step_in_own_solves); });
 
   for (const Breakdown& b : runs) {
     const FoundationRunResult& r = b.result;
-    std::vector<double> values = {double(b.nx), double(b.ny), double(r.ndof), double(r.steps),
-                                  double(r.newton_iterations_total), double(r.factorizations), r.wall_seconds};
+    std::vector<double> values = {double(b.nx),
+                                  double(b.ny),
+                                  double(r.ndof),
+                                  double(r.steps),
+                                  double(r.newton_iterations_total),
+                                  double(r.factorizations),
+                                  r.wall_seconds};
     for (const RunPhase& p : b.phases) values.push_back(p.seconds);
     for (double v : {b.one_solve.in_iteration, b.one_solve.back_to_back, r.solve_seconds / r.newton_iterations_total,
                      b.iteration_in_solves, b.one_iteration_step, double(b.one_iteration_steps), b.own_solve,

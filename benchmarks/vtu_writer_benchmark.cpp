@@ -26,7 +26,8 @@ std::vector<double> cell_values(const Mesh& mesh, int components, double scale) 
   for (int c = 0; c < mesh.num_cells(); ++c) {
     double x = 0, y = 0;
     for (const int n : mesh.cell(c)) x += mesh.node(n)[0] / 3, y += mesh.node(n)[1] / 3;
-    for (int k = 0; k < components; ++k) values[size_t(c) * components + k] = scale * std::sin(300 * x + k) * std::cos(500 * y);
+    for (int k = 0; k < components; ++k)
+      values[size_t(c) * components + k] = scale * std::sin(300 * x + k) * std::cos(500 * y);
   }
   return values;
 }
@@ -59,7 +60,8 @@ void BM_WriteVtu(benchmark::State& state) {
   writer.add_cell_data("electric_displacement", 2, cell_values(*mesh, 2, 1e-4));
 
   const std::string path =
-      (std::filesystem::temp_directory_path() / ("vtu_writer_benchmark_" + std::to_string(::getpid()) + ".vtu")).string();
+      (std::filesystem::temp_directory_path() / ("vtu_writer_benchmark_" + std::to_string(::getpid()) + ".vtu"))
+          .string();
   for (auto _ : state) writer.write(path, format);
   const double bytes = double(std::filesystem::file_size(path));
   std::filesystem::remove(path);

@@ -51,8 +51,7 @@ struct AugmentedCoulomb {
   }
 
   // P_B(z) for the disk of radius g >= 0: z inside, else g z / |z| (0 when g = 0).
-  template <class S>
-  static void project(const S* z, int dim, const S& g, S* out) {
+  template <class S> static void project(const S* z, int dim, const S& g, S* out) {
     using std::sqrt;
     S norm2 = z[0] * z[0];
     for (int d = 1; d < dim; ++d) norm2 += z[d] * z[d];
@@ -77,8 +76,7 @@ struct AlartCurnierKernel {
   int pressure_argument;
   std::shared_ptr<const FoundationMotion> motion;
 
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     const int dim = in.dim;
     const double r = law->r;
     S lambda_tau[3]{}, slip[3]{}, z[3]{}, projected[3]{};
@@ -96,8 +94,7 @@ struct AlartCurnierKernel {
   }
 };
 
-template <class Law = AugmentedCoulomb>
-class AlartCurnierFrictionBrick : public PairedLawBrick<Law> {
+template <class Law = AugmentedCoulomb> class AlartCurnierFrictionBrick : public PairedLawBrick<Law> {
   using Base = PairedLawBrick<Law>;
 
  public:
@@ -106,7 +103,8 @@ class AlartCurnierFrictionBrick : public PairedLawBrick<Law> {
   explicit AlartCurnierFrictionBrick(std::string region, std::shared_ptr<const NormalPressure> normal,
                                      ContactFields fields = {}, ParameterNames names = {})
       : Base(BoundLaw<Law>(std::move(names)), std::move(region), std::move(normal)),
-        velocity_(fields.velocity), motion_(fields.motion) {
+        velocity_(fields.velocity),
+        motion_(fields.motion) {
     this->require_pairing_of(name());
     this->require_motion_of_pairing(name(), motion_.get());
     std::vector<FieldUse> uses = {{kMultiplier}, {fields.velocity}};

@@ -27,14 +27,11 @@ struct ParameterNames {
   }
 };
 
-template <class Law>
-class BoundLaw {
+template <class Law> class BoundLaw {
  public:
-  explicit BoundLaw(ParameterNames names)
-    requires DeclaresParameters<Law>
-      : law_(std::make_shared<Law>()), names_(std::move(names)) {}
-  explicit BoundLaw(Law fixed)
-    requires(!DeclaresParameters<Law>)
+  explicit BoundLaw(ParameterNames names) requires DeclaresParameters<Law> : law_(std::make_shared<Law>()),
+                                                                             names_(std::move(names)) {}
+  explicit BoundLaw(Law fixed) requires(!DeclaresParameters<Law>)
       : law_(std::make_shared<Law>(std::move(fixed))), updated_(true) {}
 
   // The model constants the law reads (none for a fixed law).
@@ -56,11 +53,10 @@ class BoundLaw {
         try {
           value = data.scalar(constant);
         } catch (const Error& e) {
-          fail("brick '", brick, "' reads its parameter ", p.name, " from the model constant '", constant, "': ",
-               e.what());
+          fail("brick '", brick, "' reads its parameter ", p.name, " from the model constant '", constant,
+               "': ", e.what());
         }
-        check_parameter(declarations[i++], value,
-                        message("brick '", brick, "' (model constant '", constant, "')"));
+        check_parameter(declarations[i++], value, message("brick '", brick, "' (model constant '", constant, "')"));
         law.*(p.member) = value;
       }
       *law_ = law;

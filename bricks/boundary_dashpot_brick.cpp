@@ -11,8 +11,7 @@ namespace {
 
 struct DashpotKernel {
   std::shared_ptr<const double> c_b;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     for (int d = 0; d < in.dim; ++d) out.f0[0][d] = *c_b * in.value[0][d];
   }
 };
@@ -21,10 +20,9 @@ struct DashpotKernel {
 
 BoundaryDashpotBrick::BoundaryDashpotBrick(std::string region, std::string datum, std::string velocity)
     : region_(std::move(region)), datum_(std::move(datum)), c_b_(std::make_shared<double>(0.0)) {
-  term_ = std::make_shared<PointwiseTerm<DashpotKernel>>(name(), Integration::Faces,
-                                                         std::vector<FieldUse>{{std::move(velocity)}},
-                                                         std::vector<int>{0}, std::vector<Coupling>{{0, 0}},
-                                                         DashpotKernel{c_b_});
+  term_ = std::make_shared<PointwiseTerm<DashpotKernel>>(
+      name(), Integration::Faces, std::vector<FieldUse>{{std::move(velocity)}}, std::vector<int>{0},
+      std::vector<Coupling>{{0, 0}}, DashpotKernel{c_b_});
 }
 
 void BoundaryDashpotBrick::update(const DataView& data) {

@@ -53,8 +53,8 @@ struct UniformValueCondition {
 
 // An unknown a brick brings with it, e.g. a contact multiplier: a field in the space of the field `like`,
 // living on `region` only (its dofs off the region, and those where `like` is prescribed, are eliminated
-// at 0, so the system grows by the region's free dofs). The model adds it when the brick is added. Its residual must be in the units of
-// like's (a force, for a multiplier of v): Newton measures it at least by that block's scale.
+// at 0, so the system grows by the region's free dofs). The model adds it when the brick is added. Its residual must be
+// in the units of like's (a force, for a multiplier of v): Newton measures it at least by that block's scale.
 struct BrickUnknown {
   std::string name;
   std::string like;

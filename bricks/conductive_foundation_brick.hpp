@@ -16,36 +16,32 @@
 namespace pc {
 
 // Field 0 is the tested potential; field 1, if any, is the vector field the paired normal law reads.
-template <class Law>
-struct ConductiveFoundationKernel {
+template <class Law> struct ConductiveFoundationKernel {
   std::shared_ptr<const Law> law;
   std::shared_ptr<const NormalPressure> normal;  // null for a law that reads no pressure
 
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     S p_nu(0.0);
     if constexpr (law_uses_normal_pressure<Law>) p_nu = normal->at(in.value[1].data(), in.normal, in.dim, in.time);
     out.f0[0][0] = (*law)(in.value[0][0], p_nu);
   }
 };
 
-template <class Law>
-class ConductiveFoundationBrick : public PairedLawBrick<Law> {
+template <class Law> class ConductiveFoundationBrick : public PairedLawBrick<Law> {
   using Base = PairedLawBrick<Law>;
 
  public:
   // Parameters read from the model's constants; `normal` is the paired normal brick, for a law that reads
   // the contact pressure (and only for one).
   explicit ConductiveFoundationBrick(std::string region = "contact",
-                                     std::shared_ptr<const NormalPressure> normal = nullptr,
-                                     ContactFields fields = {}, ParameterNames names = {})
-    requires DeclaresParameters<Law>
+                                     std::shared_ptr<const NormalPressure> normal = nullptr, ContactFields fields = {},
+                                     ParameterNames names = {}) requires DeclaresParameters<Law>
       : ConductiveFoundationBrick(BoundLaw<Law>(std::move(names)), std::move(region), std::move(normal),
                                   std::move(fields)) {}
   // A law that declares no parameters, with fixed values.
   explicit ConductiveFoundationBrick(Law law, std::string region = "contact",
-                                     std::shared_ptr<const NormalPressure> normal = nullptr, ContactFields fields = {})
-    requires(!DeclaresParameters<Law>)
+                                     std::shared_ptr<const NormalPressure> normal = nullptr,
+                                     ContactFields fields = {}) requires(!DeclaresParameters<Law>)
       : ConductiveFoundationBrick(BoundLaw<Law>(std::move(law)), std::move(region), std::move(normal),
                                   std::move(fields)) {}
 

@@ -17,15 +17,13 @@ struct ContactFields {
   std::shared_ptr<const FoundationMotion> motion = nullptr;
 };
 
-template <class S>
-S normal_part(const S* r, const double* n, int dim) {
+template <class S> S normal_part(const S* r, const double* n, int dim) {
   S r_nu = r[0] * n[0];
   for (int d = 1; d < dim; ++d) r_nu += r[d] * n[d];
   return r_nu;
 }
 
-template <class S>
-void tangential_part(const S* r, const double* n, int dim, S* out) {
+template <class S> void tangential_part(const S* r, const double* n, int dim, S* out) {
   const S r_nu = normal_part(r, n, dim);
   for (int d = 0; d < dim; ++d) out[d] = r[d] - r_nu * n[d];
 }

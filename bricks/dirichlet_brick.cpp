@@ -17,11 +17,12 @@ DirichletBrick::DirichletBrick(std::string unknown, std::string region, std::vec
 }
 
 DirichletBrick::DirichletBrick(std::string unknown, std::string region, std::vector<int> components, double value)
-    : DirichletBrick(std::move(unknown), std::move(region), std::move(components),
-                     [value](const double*, double, double* out) {
-                       for (int c = 0; c < 3; ++c) out[c] = value;
-                     },
-                     false) {
+    : DirichletBrick(
+          std::move(unknown), std::move(region), std::move(components),
+          [value](const double*, double, double* out) {
+            for (int c = 0; c < 3; ++c) out[c] = value;
+          },
+          false) {
   require(std::isfinite(value), "brick '", name(), "': the prescribed value is ", value);
 }
 

@@ -8,8 +8,7 @@ namespace pc {
 
 struct ElasticFlux {
   double lambda = 1.2, mu = 0.8;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     S trace = 0;
     for (int d = 0; d < in.dim; ++d) trace += in.grad[0][d][d];
     for (int i = 0; i < in.dim; ++i)

@@ -7,10 +7,10 @@
 
 namespace pc {
 
-ElasticityBrick::ElasticityBrick(std::string region, std::string datum, std::string velocity,
-                                 std::string displacement)
+ElasticityBrick::ElasticityBrick(std::string region, std::string datum, std::string velocity, std::string displacement)
     : MaterialBrick("elasticity", std::move(region), std::move(datum), true),
-      velocity_(std::move(velocity)), displacement_(std::move(displacement)) {}
+      velocity_(std::move(velocity)),
+      displacement_(std::move(displacement)) {}
 
 std::shared_ptr<const Term> ElasticityBrick::make_term(const Eigen::MatrixXd& B) const {
   check_stiffness(datum(), B, stiffness_dimension(datum(), B));

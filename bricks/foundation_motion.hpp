@@ -39,8 +39,10 @@ std::array<S, 3> relative_to_foundation(const S* value, const FoundationMotion* 
   std::array<S, 3> r{};
   double m[3] = {0, 0, 0};
   if (motion) {
-    if (displacement) motion->displacement_at(t, m);
-    else motion->velocity_at(t, m);
+    if (displacement)
+      motion->displacement_at(t, m);
+    else
+      motion->velocity_at(t, m);
   }
   for (int d = 0; d < dim; ++d) r[d] = value[d] - m[d];
   return r;

@@ -18,15 +18,13 @@
 namespace pc {
 
 // Field 0 is the tested velocity; `pressure_argument` is the field the paired normal law reads.
-template <class Law>
-struct FrictionKernel {
+template <class Law> struct FrictionKernel {
   std::shared_ptr<const Law> law;
   std::shared_ptr<const NormalPressure> normal;  // null for a law that reads no pressure
   int pressure_argument;
   std::shared_ptr<const FoundationMotion> motion = nullptr;  // null: the foundation is at rest
 
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     const int dim = in.dim;
     S v_tau[3]{}, p_tau[3]{};
     const auto slip = relative_to_foundation(in.value[0].data(), motion.get(), false, in.time, dim);
@@ -39,21 +37,19 @@ struct FrictionKernel {
   }
 };
 
-template <class Law>
-class FrictionBrick : public PairedLawBrick<Law> {
+template <class Law> class FrictionBrick : public PairedLawBrick<Law> {
   using Base = PairedLawBrick<Law>;
 
  public:
   // Parameters read from the model's constants; `normal` is the paired normal brick, for a law that reads
   // the contact pressure (and only for one).
   explicit FrictionBrick(std::string region = "contact", std::shared_ptr<const NormalPressure> normal = nullptr,
-                         ContactFields fields = {}, ParameterNames names = {})
-    requires DeclaresParameters<Law>
+                         ContactFields fields = {}, ParameterNames names = {}) requires DeclaresParameters<Law>
       : FrictionBrick(BoundLaw<Law>(std::move(names)), std::move(region), std::move(normal), std::move(fields)) {}
   // A law that declares no parameters, with fixed values.
-  explicit FrictionBrick(Law law, std::string region = "contact", std::shared_ptr<const NormalPressure> normal = nullptr,
-                         ContactFields fields = {})
-    requires(!DeclaresParameters<Law>)
+  explicit FrictionBrick(Law law, std::string region = "contact",
+                         std::shared_ptr<const NormalPressure> normal = nullptr,
+                         ContactFields fields = {}) requires(!DeclaresParameters<Law>)
       : FrictionBrick(BoundLaw<Law>(std::move(law)), std::move(region), std::move(normal), std::move(fields)) {}
 
   std::string name() const override { return "friction on " + this->region_; }

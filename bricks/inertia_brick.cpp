@@ -43,7 +43,8 @@ class MassTerm : public Term {
 
 InertiaBrick::InertiaBrick(std::string region, std::string datum, std::string velocity, std::string acceleration)
     : MaterialBrick("inertia", std::move(region), std::move(datum), true),
-      velocity_(std::move(velocity)), acceleration_(std::move(acceleration)) {}
+      velocity_(std::move(velocity)),
+      acceleration_(std::move(acceleration)) {}
 
 std::shared_ptr<const Term> InertiaBrick::make_term(const Eigen::MatrixXd& constant) const {
   require(constant.size() == 1, "datum '", datum(), "' (density) must be a scalar, got a ", constant.rows(), " x ",

@@ -25,8 +25,9 @@ Registry<BrickFactory>& brick_registry() {
 }
 
 Registry<PairedLawFactory>::Entry no_brick_entry(std::string name, std::string doc) {
-  return {std::move(name), std::move(doc), {},
-          [](const ContactSurface&, const std::shared_ptr<const NormalPressure>&) { return std::shared_ptr<Brick>(); }};
+  return {std::move(name), std::move(doc), {}, [](const ContactSurface&, const std::shared_ptr<const NormalPressure>&) {
+            return std::shared_ptr<Brick>();
+          }};
 }
 
 }  // namespace pc

@@ -37,8 +37,7 @@ Registry<NormalLawFactory>& normal_law_registry();
 Registry<PairedLawFactory>& friction_law_registry();
 Registry<PairedLawFactory>& foundation_law_registry();
 
-template <class Law>
-Registry<NormalLawFactory>::Entry normal_law_entry(std::string name, std::string doc) {
+template <class Law> Registry<NormalLawFactory>::Entry normal_law_entry(std::string name, std::string doc) {
   return {std::move(name), std::move(doc), parameter_declarations<Law>(), [](const ContactSurface& s) {
             return std::make_shared<NormalResponseBrick<Law>>(s.region, s.fields, s.names);
           }};
@@ -59,7 +58,8 @@ Registry<PairedLawFactory>::Entry no_brick_entry(std::string name, std::string d
 
 }  // namespace pc
 
-#define PC_REGISTER_NORMAL_LAW(Law, name, doc) PC_REGISTER(pc::normal_law_registry(), pc::normal_law_entry<Law>(name, doc))
+#define PC_REGISTER_NORMAL_LAW(Law, name, doc) \
+  PC_REGISTER(pc::normal_law_registry(), pc::normal_law_entry<Law>(name, doc))
 #define PC_REGISTER_FRICTION_LAW(Law, name, doc) \
   PC_REGISTER(pc::friction_law_registry(), pc::paired_law_entry<pc::FrictionBrick, Law>(name, doc))
 #define PC_REGISTER_FOUNDATION_LAW(Law, name, doc) \

@@ -37,8 +37,7 @@ class NormalPressure {
 
   // p_nu at a point and time t from the argument's value there and the outward unit normal, relative
   // to the foundation's motion.
-  template <class S>
-  S at(const S* argument, const double* normal, int dim, double t) const {
+  template <class S> S at(const S* argument, const double* normal, int dim, double t) const {
     const auto relative = relative_to_foundation(argument, motion(), reads_displacement(), t, dim);
     const S r = normal_part(relative.data(), normal, dim);
     double slope = 0;

@@ -23,30 +23,27 @@
 namespace pc {
 
 // Field 0 is the tested velocity; `argument` is the field the law reads (0, or 1 for the displacement).
-template <class Law>
-struct NormalResponseKernel {
+template <class Law> struct NormalResponseKernel {
   std::shared_ptr<const Law> law;
   int argument;
   std::shared_ptr<const FoundationMotion> motion = nullptr;  // null: the foundation is at rest
 
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     const auto r = relative_to_foundation(in.value[argument].data(), motion.get(), argument == 1, in.time, in.dim);
     const S p_nu = (*law)(normal_part(r.data(), in.normal, in.dim));
     for (int d = 0; d < in.dim; ++d) out.f0[0][d] = p_nu * in.normal[d];
   }
 };
 
-template <class Law>
-class NormalResponseBrick : public NormalContactBrick {
+template <class Law> class NormalResponseBrick : public NormalContactBrick {
  public:
   // Parameters read from the model's constants (named by `names`).
-  explicit NormalResponseBrick(std::string region = "contact", ContactFields fields = {}, ParameterNames names = {})
-    requires DeclaresParameters<Law>
+  explicit NormalResponseBrick(std::string region = "contact", ContactFields fields = {},
+                               ParameterNames names = {}) requires DeclaresParameters<Law>
       : NormalResponseBrick(BoundLaw<Law>(std::move(names)), std::move(region), std::move(fields)) {}
   // A law that declares no parameters, with fixed values.
-  explicit NormalResponseBrick(Law law, std::string region = "contact", ContactFields fields = {})
-    requires(!DeclaresParameters<Law>)
+  explicit NormalResponseBrick(Law law, std::string region = "contact",
+                               ContactFields fields = {}) requires(!DeclaresParameters<Law>)
       : NormalResponseBrick(BoundLaw<Law>(std::move(law)), std::move(region), std::move(fields)) {}
 
   std::string name() const override { return "normal response on " + region_; }
@@ -63,7 +60,8 @@ class NormalResponseBrick : public NormalContactBrick {
   const std::string& region() const override { return region_; }
 
   double pressure(double r, double* slope) const override {
-    require(law_.updated(), "brick '", name(), "': its pressure was read before update() read its law's parameters "
+    require(law_.updated(), "brick '", name(),
+            "': its pressure was read before update() read its law's parameters "
             "(add the normal brick to the model, or update it, before the bricks paired with it are assembled)");
     const Dual<1> p = (*law_)(Dual<1>::variable(r, 0));
     *slope = p.d[0];

@@ -14,8 +14,7 @@
 
 namespace pc {
 
-template <class Law>
-class PairedLawBrick : public Brick {
+template <class Law> class PairedLawBrick : public Brick {
  public:
   // The law's constants and, for a law reading the pressure, the normal law's: a new c_nu changes it too.
   std::vector<std::string> data() const override { return paired_data(law_.data(), normal_.get()); }

@@ -13,8 +13,10 @@ namespace {
 class PermittivityTerm : public Term {
  public:
   PermittivityTerm(std::string name, const std::string& potential, std::string datum, const Eigen::MatrixXd& beta)
-      : Term(std::move(name), Integration::Cells, {{potential, true}}, {0}, {{0, 0}}), datum_(std::move(datum)),
-        beta_(beta), dim_(permittivity_dimension(datum_, beta)) {}
+      : Term(std::move(name), Integration::Cells, {{potential, true}}, {0}, {{0, 0}}),
+        datum_(std::move(datum)),
+        beta_(beta),
+        dim_(permittivity_dimension(datum_, beta)) {}
 
   void assemble(const ElementData& e, LocalSystem& local, bool want_residual, bool want_tangent) const override {
     require_element_fits(*this, e, datum_, dim_, {false});
@@ -39,8 +41,7 @@ class PermittivityTerm : public Term {
 }  // namespace
 
 PermittivityBrick::PermittivityBrick(std::string region, std::string datum, std::string potential)
-    : MaterialBrick("permittivity", std::move(region), std::move(datum), true),
-      potential_(std::move(potential)) {}
+    : MaterialBrick("permittivity", std::move(region), std::move(datum), true), potential_(std::move(potential)) {}
 
 std::shared_ptr<const Term> PermittivityBrick::make_term(const Eigen::MatrixXd& beta) const {
   check_permittivity(datum(), beta, permittivity_dimension(datum(), beta));

@@ -12,8 +12,8 @@ namespace {
 constexpr std::array<int, 3> kPlaneStrain = {0, 1, 5};
 
 void require_size(const char* what, const Eigen::MatrixXd& M, int rows, int cols) {
-  require(M.rows() == rows && M.cols() == cols, what, ": expects a 3D tensor (", rows, " x ", cols, "), got ",
-          M.rows(), " x ", M.cols());
+  require(M.rows() == rows && M.cols() == cols, what, ": expects a 3D tensor (", rows, " x ", cols, "), got ", M.rows(),
+          " x ", M.cols());
 }
 
 std::shared_ptr<const PiezoMaterialPreset> preset(const HexagonalConstants& k) {
@@ -70,7 +70,8 @@ Eigen::MatrixXd plane_strain_permittivity(const Eigen::MatrixXd& beta) {
 
 PiezoTensors PiezoMaterialPreset::tensors(int dim, Axis poling) const {
   require(dim == 2 || dim == 3, "piezoelectric material preset: dimension must be 2 or 3, got ", dim);
-  require(dim == 3 || poling != Axis::z, "piezoelectric material preset: a 2D (plane strain, x-y) model is poled "
+  require(dim == 3 || poling != Axis::z,
+          "piezoelectric material preset: a 2D (plane strain, x-y) model is poled "
           "in its plane (x or y), not along z");
   const Eigen::Matrix3d R = poling_rotation(poling);
   PiezoTensors t;
@@ -150,18 +151,21 @@ struct TabulatedPreset {
   HexagonalConstants constants;
 };
 const TabulatedPreset kPresets[] = {
-    {"PZT-4", "PZT-4 (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
+    {"PZT-4",
+     "PZT-4 (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
      {1.38999e11, 7.78366e10, 7.42836e10, 1.15412e11, 2.5641e10, 3.0581e10, -5.20279, 15.0804, 12.7179,
       762.5 * kVacuumPermittivity, 663.2 * kVacuumPermittivity, 7500}},
-    {"PZT-5A", "PZT-5A (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
+    {"PZT-5A",
+     "PZT-5A (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
      {1.20346e11, 7.51791e10, 7.50901e10, 1.10867e11, 2.10526e10, 2.25734e10, -5.35116, 15.7835, 12.2947,
       919.1 * kVacuumPermittivity, 826.6 * kVacuumPermittivity, 7750}},
-    {"PZT-5H", "PZT-5H (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
+    {"PZT-5H",
+     "PZT-5H (Berlincourt et al. 1964; Jaffe, Cook & Jaffe 1971), stress-charge form",
      {1.27205e11, 8.02122e10, 8.46702e10, 1.17436e11, 2.29885e10, 2.34742e10, -6.62281, 23.2403, 17.0345,
       1704.4 * kVacuumPermittivity, 1433.6 * kVacuumPermittivity, 7500}},
-    {"BaTiO3", "poled BaTiO3 ceramic (Jaffe, Cook & Jaffe 1971), stress-charge form",
-     {1.66e11, 7.66e10, 7.75e10, 1.62e11, 4.29e10, 4.48e10, -4.4, 18.6, 11.6,
-      11.2e-9, 12.6e-9, 5700}},
+    {"BaTiO3",
+     "poled BaTiO3 ceramic (Jaffe, Cook & Jaffe 1971), stress-charge form",
+     {1.66e11, 7.66e10, 7.75e10, 1.62e11, 4.29e10, 4.48e10, -4.4, 18.6, 11.6, 11.2e-9, 12.6e-9, 5700}},
 };
 
 [[maybe_unused]] const bool kPresetsRegistered = [] {

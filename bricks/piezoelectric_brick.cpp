@@ -17,7 +17,9 @@ class PiezoelectricTerm : public Term {
                     const std::string& displacement, std::string datum, const Eigen::MatrixXd& E)
       : Term(std::move(name), Integration::Cells, {{velocity, true}, {potential, true}, {displacement, true}},
              {kV, kPhi}, {{kV, kPhi}, {kPhi, kU}}),
-        datum_(std::move(datum)), E_(E), dim_(piezoelectric_dimension(datum_, E)) {}
+        datum_(std::move(datum)),
+        E_(E),
+        dim_(piezoelectric_dimension(datum_, E)) {}
 
   void assemble(const ElementData& e, LocalSystem& local, bool want_residual, bool want_tangent) const override {
     require_element_fits(*this, e, datum_, dim_, {true, false, true});
@@ -56,7 +58,9 @@ class PiezoelectricTerm : public Term {
 PiezoelectricCouplingBrick::PiezoelectricCouplingBrick(std::string region, std::string datum, std::string velocity,
                                                        std::string potential, std::string displacement)
     : MaterialBrick("piezoelectric coupling", std::move(region), std::move(datum), false),
-      velocity_(std::move(velocity)), potential_(std::move(potential)), displacement_(std::move(displacement)) {}
+      velocity_(std::move(velocity)),
+      potential_(std::move(potential)),
+      displacement_(std::move(displacement)) {}
 
 std::shared_ptr<const Term> PiezoelectricCouplingBrick::make_term(const Eigen::MatrixXd& E) const {
   check_piezoelectric(datum(), E, piezoelectric_dimension(datum(), E));

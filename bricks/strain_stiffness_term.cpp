@@ -19,7 +19,9 @@ std::vector<FieldUse> fields_of(const std::string& test, const std::string& tria
 StrainStiffnessTerm::StrainStiffnessTerm(std::string name, const std::string& test, const std::string& trial,
                                          std::string datum, const Eigen::MatrixXd& C)
     : Term(std::move(name), Integration::Cells, fields_of(test, trial), {0}, {{0, test == trial ? 0 : 1}}),
-      datum_(std::move(datum)), C_(C), dim_(stiffness_dimension(datum_, C)) {}
+      datum_(std::move(datum)),
+      C_(C),
+      dim_(stiffness_dimension(datum_, C)) {}
 
 void StrainStiffnessTerm::assemble(const ElementData& e, LocalSystem& local, bool want_residual,
                                    bool want_tangent) const {

@@ -16,9 +16,7 @@ class UniformValueBrick : public Brick {
   UniformValueBrick(std::string unknown, std::string region, int component = 0)
       : condition_{std::move(unknown), std::move(region), component} {}
 
-  std::string name() const override {
-    return "uniform value of " + condition_.unknown + " over " + condition_.region;
-  }
+  std::string name() const override { return "uniform value of " + condition_.unknown + " over " + condition_.region; }
   std::vector<BrickTerm> terms() const override { return {}; }
   std::vector<UniformValueCondition> uniform_value_conditions() const override { return {condition_}; }
   bool linear() const override { return true; }

@@ -8,8 +8,7 @@
 namespace pc {
 
 ViscosityBrick::ViscosityBrick(std::string region, std::string datum, std::string velocity)
-    : MaterialBrick("viscosity", std::move(region), std::move(datum), true),
-      velocity_(std::move(velocity)) {}
+    : MaterialBrick("viscosity", std::move(region), std::move(datum), true), velocity_(std::move(velocity)) {}
 
 std::shared_ptr<const Term> ViscosityBrick::make_term(const Eigen::MatrixXd& A) const {
   check_stiffness(datum(), A, stiffness_dimension(datum(), A), /*allow_zero=*/true);

@@ -38,8 +38,8 @@ void check_symmetric_positive(const std::string& name, const Eigen::MatrixXd& M,
   if (allow_zero && largest == 0) return;
   for (int r = 0; r < M.rows(); ++r)
     for (int c = 0; c < r; ++c)
-      require(std::abs(M(r, c) - M(c, r)) <= 1e-10 * largest, "datum '", name, "' is not symmetric: entry (", r,
-              ", ", c, ") = ", M(r, c), " but (", c, ", ", r, ") = ", M(c, r));
+      require(std::abs(M(r, c) - M(c, r)) <= 1e-10 * largest, "datum '", name, "' is not symmetric: entry (", r, ", ",
+              c, ") = ", M(r, c), " but (", c, ", ", r, ") = ", M(c, r));
   const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M, Eigen::EigenvaluesOnly).eigenvalues()(0);
   const bool factorizes = Eigen::LLT<Eigen::MatrixXd>(M).info() == Eigen::Success;
   require(factorizes && smallest > 0, "datum '", name, "' is not positive definite (smallest eigenvalue ", smallest,
@@ -51,8 +51,8 @@ int dimension_from_size(const std::string& name, const Eigen::MatrixXd& M, std::
                         std::array<int, 2> cols_2d3d) {
   for (int k = 0; k < 2; ++k)
     if (M.rows() == rows_2d3d[k] && M.cols() == cols_2d3d[k]) return k + 2;
-  fail("datum '", name, "' must be ", rows_2d3d[0], " x ", cols_2d3d[0], " (2D) or ", rows_2d3d[1], " x ",
-       cols_2d3d[1], " (3D), got ", M.rows(), " x ", M.cols());
+  fail("datum '", name, "' must be ", rows_2d3d[0], " x ", cols_2d3d[0], " (2D) or ", rows_2d3d[1], " x ", cols_2d3d[1],
+       " (3D), got ", M.rows(), " x ", M.cols());
 }
 
 // Rows: sigma' = R sigma R^T in Voigt form (engineering shear strains make the strain rule T^-T).
@@ -76,8 +76,8 @@ void check_rotation(const Eigen::Matrix3d& R) {
 }
 
 void check_3d(const char* what, const Eigen::MatrixXd& M, int rows, int cols) {
-  require(M.rows() == rows && M.cols() == cols, "rotate_", what, ": rotations are for 3D tensors (", rows, " x ",
-          cols, "), got ", M.rows(), " x ", M.cols());
+  require(M.rows() == rows && M.cols() == cols, "rotate_", what, ": rotations are for 3D tensors (", rows, " x ", cols,
+          "), got ", M.rows(), " x ", M.cols());
 }
 
 }  // namespace

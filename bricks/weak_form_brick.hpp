@@ -39,8 +39,7 @@ struct WeakForm {
   int extra_degree = 0;         // quadrature degree beyond 2 * order, for strongly nonlinear kernels
 };
 
-template <class Kernel>
-class WeakFormBrick : public Brick {
+template <class Kernel> class WeakFormBrick : public Brick {
  public:
   WeakFormBrick(WeakForm form, Kernel kernel) : form_(std::move(form)) {
     std::vector<int> tests;
@@ -48,12 +47,12 @@ class WeakFormBrick : public Brick {
     std::vector<Coupling> couplings;
     for (const auto& [test, trial] : form_.couplings) {
       const int t = field_index(test, "coupling test");
-      require(std::find(tests.begin(), tests.end(), t) != tests.end(), "weak form '", form_.name,
-              "': coupling (", test, ", ", trial, ") has a test field that is not among its tests");
+      require(std::find(tests.begin(), tests.end(), t) != tests.end(), "weak form '", form_.name, "': coupling (", test,
+              ", ", trial, ") has a test field that is not among its tests");
       couplings.push_back({t, field_index(trial, "coupling trial")});
     }
     term_ = std::make_shared<PointwiseTerm<Kernel>>(form_.name, form_.integration, form_.fields, std::move(tests),
-                                                     std::move(couplings), std::move(kernel), form_.extra_degree);
+                                                    std::move(couplings), std::move(kernel), form_.extra_degree);
   }
 
   std::string name() const override { return form_.name; }

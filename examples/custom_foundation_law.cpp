@@ -44,17 +44,15 @@ struct SaturatingConductance {
   static constexpr bool uses_normal_pressure = false;  // conducts whether pressed or not
 
   static constexpr auto parameters() {
-    return std::array{
-        law_parameter("k_e", &SaturatingConductance::k_e, "C/(V m^2)", "conductance at small potential differences",
-                      Range::at_least(0), Required::yes),
-        law_parameter("phi_f", &SaturatingConductance::phi_f, "V", "potential of the foundation", Range::any(),
-                      Required::yes),
-        law_parameter("phi_s", &SaturatingConductance::phi_s, "V", "potential difference where the flux saturates",
-                      Range::positive())};
+    return std::array{law_parameter("k_e", &SaturatingConductance::k_e, "C/(V m^2)",
+                                    "conductance at small potential differences", Range::at_least(0), Required::yes),
+                      law_parameter("phi_f", &SaturatingConductance::phi_f, "V", "potential of the foundation",
+                                    Range::any(), Required::yes),
+                      law_parameter("phi_s", &SaturatingConductance::phi_s, "V",
+                                    "potential difference where the flux saturates", Range::positive())};
   }
 
-  template <class S>
-  S operator()(const S& phi, const S& /*pressure*/) const {
+  template <class S> S operator()(const S& phi, const S& /*pressure*/) const {
     using std::tanh;  // std::tanh for double; pc::tanh (found by argument-dependent lookup) for Dual
     return k_e * phi_s * tanh((phi - phi_f) / phi_s);
   }
@@ -114,9 +112,9 @@ int main() {
     const SaturatingConductance saturating{1.0, -48.0, 3e-5};
 
     // Check the law before using it: its Dual derivatives against finite differences, its dissipative
-    // claim (monotone in phi), its values inside their declared ranges, finite values at extreme arguments. The derivatives are checked
-    // with parameters of order one: next to phi_f = -48 V, phi is only known to ~1e-14 V, too coarse for
-    // finite differences over phi_s = 3e-5 V. The run's own parameters get the other checks.
+    // claim (monotone in phi), its values inside their declared ranges, finite values at extreme arguments. The
+    // derivatives are checked with parameters of order one: next to phi_f = -48 V, phi is only known to ~1e-14 V, too
+    // coarse for finite differences over phi_s = 3e-5 V. The run's own parameters get the other checks.
     auto check = [](const SaturatingConductance& law, const LawCheckOptions& options) {
       const LawCheckReport report = check_foundation_law(law, options);
       std::cout << "law check: " << report << "\n";

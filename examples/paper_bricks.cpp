@@ -31,11 +31,11 @@
 #include "bricks/source_bricks.hpp"
 #include "bricks/viscosity_brick.hpp"
 #include "models/model.hpp"
-#include "models/piezo/material_constants.hpp"
-#include "models/solvers/newton.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/initial_potential.hpp"
+#include "models/piezo/material_constants.hpp"
+#include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 
@@ -109,8 +109,8 @@ int main(int argc, char** argv) {
       if (step.step % 10 != 0) return;
       const double u_y = evaluate_at(m.space("u"), m.values("u"), locator, corner)[1];
       const double phi = evaluate_at(m.space("phi"), m.values("phi"), locator, centre)[0];
-      std::printf("step %3d  t = %.4f  Newton %d  u_y(corner) = %+.4e m  phi(centre) = %+.4e V\n", step.step,
-                  step.time, step.newton.iterations, u_y, phi);
+      std::printf("step %3d  t = %.4f  Newton %d  u_y(corner) = %+.4e m  phi(centre) = %+.4e V\n", step.step, step.time,
+                  step.newton.iterations, u_y, phi);
     };
     callbacks.on_output = [&](const Model& m, const StepRecord& step) {
       VtuWriter writer(m.mesh());

@@ -43,13 +43,14 @@
 namespace {
 
 // A number option's value; anything else ends the program with an error naming the option and the text.
-template <class T>
-T number(const std::string& option, const std::string& text) {
+template <class T> T number(const std::string& option, const std::string& text) {
   size_t used = 0;
   T value{};
   try {
-    if constexpr (std::is_same_v<T, int>) value = std::stoi(text, &used);
-    else value = std::stod(text, &used);
+    if constexpr (std::is_same_v<T, int>)
+      value = std::stoi(text, &used);
+    else
+      value = std::stod(text, &used);
   } catch (const std::exception&) {
     used = 0;
   }
@@ -61,14 +62,16 @@ T number(const std::string& option, const std::string& text) {
 }
 
 int usage() {
-  std::fprintf(stderr,
-               "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]\n"
-               "                        [--target-error E (a fraction, 0.01, or a percentage, 1%%)]\n"
-               "       piezocontact check SCENE [--set key=value ...]\n"
-               "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]\n"
-               "       piezocontact list [--plugin LIB ...]\n"
-               "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n"
-               "       piezocontact --version\n");
+  std::fprintf(
+      stderr,
+      "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] "
+      "[--resume]\n"
+      "                        [--target-error E (a fraction, 0.01, or a percentage, 1%%)]\n"
+      "       piezocontact check SCENE [--set key=value ...]\n"
+      "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]\n"
+      "       piezocontact list [--plugin LIB ...]\n"
+      "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n"
+      "       piezocontact --version\n");
   return 2;
 }
 
@@ -89,10 +92,14 @@ int catalog(const std::string& command, int argc, char** argv) {
   bool markdown = false;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--plugin" && i + 1 < argc) pc::load_plugin(argv[++i]);
-    else if (arg == "--markdown" && command == "describe") markdown = true;
-    else if (name.empty() && arg.rfind("--", 0) != 0 && command == "describe") name = arg;
-    else return usage();
+    if (arg == "--plugin" && i + 1 < argc)
+      pc::load_plugin(argv[++i]);
+    else if (arg == "--markdown" && command == "describe")
+      markdown = true;
+    else if (name.empty() && arg.rfind("--", 0) != 0 && command == "describe")
+      name = arg;
+    else
+      return usage();
   }
   const auto sections = pc::registry_catalog();
   if (command == "list") {
@@ -176,16 +183,24 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "error: --out is empty: name the directory to write the results into\n");
         return 1;
       }
-    }
-    else if (arg == "--set") overrides.push_back(value());
-    else if (arg == "--only") options.only.push_back(value());
-    else if (arg == "--no-sweep") options.sweep = false;
-    else if (arg == "--quiet") options.progress = false;
-    else if (arg == "--resume") options.resume = true;
-    else if (arg == "--target-error" && command == "run") overrides.push_back("target_error=" + target_error_fraction(value()));
-    else if (arg == "--count" && command == "modes") modal.modes = number<int>(arg, value());
-    else if (arg == "--shift" && command == "modes") modal.shift_hz = number<double>(arg, value());
-    else if (arg == "--open-circuit" && command == "modes") open_circuit = true;
+    } else if (arg == "--set")
+      overrides.push_back(value());
+    else if (arg == "--only")
+      options.only.push_back(value());
+    else if (arg == "--no-sweep")
+      options.sweep = false;
+    else if (arg == "--quiet")
+      options.progress = false;
+    else if (arg == "--resume")
+      options.resume = true;
+    else if (arg == "--target-error" && command == "run")
+      overrides.push_back("target_error=" + target_error_fraction(value()));
+    else if (arg == "--count" && command == "modes")
+      modal.modes = number<int>(arg, value());
+    else if (arg == "--shift" && command == "modes")
+      modal.shift_hz = number<double>(arg, value());
+    else if (arg == "--open-circuit" && command == "modes")
+      open_circuit = true;
     else {
       std::fprintf(stderr, "error: unknown option '%s'\n", arg.c_str());
       return usage();
@@ -200,8 +215,8 @@ int main(int argc, char** argv) {
       if (pc::processes::is_writer()) {
         std::printf("%zu modes of '%s' (%s, %s electrodes), nearest to %g Hz, in %d Lanczos restarts and %d solves:\n",
                     modes.frequencies_hz.size(), scene.name.c_str(), scene.mesh_description.c_str(),
-                    open_circuit ? "open-circuit" : "short-circuit", modal.shift_hz,
-                    modes.lanczos_iterations, modes.operator_applications);
+                    open_circuit ? "open-circuit" : "short-circuit", modal.shift_hz, modes.lanczos_iterations,
+                    modes.operator_applications);
         for (size_t k = 0; k < modes.frequencies_hz.size(); ++k)
           std::printf("  mode %zu: %.6g Hz\n", k + 1, modes.frequencies_hz[k]);
         std::printf("shapes and table in %s\n", directory.c_str());
@@ -218,10 +233,11 @@ int main(int argc, char** argv) {
       }
       const pc::TimeEstimate predicted = pc::estimate_run_seconds(scene.spec.mesh->dim(), dofs, scene.steps);
       if (pc::processes::is_writer())
-        std::printf("scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s; %d dofs, predicted %.3g s per "
-                  "foundation (%s)\n",
-                  scene.name.c_str(), scene.mesh_description.c_str(), scene.foundations.size(), scene.steps,
-                  scene.end_time, dofs, predicted.seconds, predicted.basis);
+        std::printf(
+            "scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s; %d dofs, predicted %.3g s per "
+            "foundation (%s)\n",
+            scene.name.c_str(), scene.mesh_description.c_str(), scene.foundations.size(), scene.steps, scene.end_time,
+            dofs, predicted.seconds, predicted.basis);
       return 0;
     }
     for (const std::string& name : options.only) {

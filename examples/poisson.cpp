@@ -22,8 +22,7 @@ double exact(const double* x) { return std::sin(M_PI * x[0]) * std::exp(x[1]); }
 
 // The weak form in flux form: R(w) = integral of grad u . grad w - f w. The tangent comes from Dual numbers.
 struct Poisson {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     out.f0[0][0] = -(M_PI * M_PI - 1) * exact(in.x);
     for (int d = 0; d < in.dim; ++d) out.f1[0][0][d] = in.grad[0][0][d];
   }

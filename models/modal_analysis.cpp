@@ -16,8 +16,10 @@ namespace {
 
 // The model's linear Jacobian with the displacement's and the acceleration's factors set.
 CsrMatrix linear_part(Model& model, const ModalOptions& o, double displacement_factor, double acceleration_factor) {
-  model.set_affine(o.displacement, displacement_factor, std::vector<double>(model.affine_coefficients(o.displacement).size(), 0.0));
-  model.set_affine(o.acceleration, acceleration_factor, std::vector<double>(model.affine_coefficients(o.acceleration).size(), 0.0));
+  model.set_affine(o.displacement, displacement_factor,
+                   std::vector<double>(model.affine_coefficients(o.displacement).size(), 0.0));
+  model.set_affine(o.acceleration, acceleration_factor,
+                   std::vector<double>(model.affine_coefficients(o.acceleration).size(), 0.0));
   model.assemble(true);
   return model.linear_jacobian();
 }
@@ -27,7 +29,9 @@ class ShiftInvert {
  public:
   using Scalar = double;
   ShiftInvert(CsrMatrix stiffness, CsrMatrix mass, int mechanical, std::string solver)
-      : stiffness_(std::move(stiffness)), mass_(std::move(mass)), mechanical_(mechanical),
+      : stiffness_(std::move(stiffness)),
+        mass_(std::move(mass)),
+        mechanical_(mechanical),
         solver_(make_linear_solver(solver)) {}
   Eigen::Index rows() const { return mechanical_; }
   Eigen::Index cols() const { return mechanical_; }
@@ -77,11 +81,16 @@ ModalResult modal_analysis(Model& model, const ModalOptions& o) {
   require(!processes::distributed(), "modal analysis: runs on one process (this run has ", processes::count(),
           "); run `piezocontact modes` without mpirun");
   require(o.modes >= 1, "modal analysis: modes must be >= 1, got ", o.modes);
-  require(std::isfinite(o.shift_hz) && o.shift_hz >= 0, "modal analysis: shift_hz must be finite and >= 0, got ", o.shift_hz);
+  require(std::isfinite(o.shift_hz) && o.shift_hz >= 0, "modal analysis: shift_hz must be finite and >= 0, got ",
+          o.shift_hz);
   for (const std::string& f : {o.displacement, o.acceleration})
-    require(model.has_field(f) && model.field_kind(f) == FieldKind::Affine, "modal analysis: the model has no affine "
-            "field '", f, "' (", f == o.acceleration ? "a mass needs an inertia brick and a scheme with the acceleration"
-                                                       : "the time scheme makes it", ")");
+    require(model.has_field(f) && model.field_kind(f) == FieldKind::Affine,
+            "modal analysis: the model has no affine "
+            "field '",
+            f, "' (",
+            f == o.acceleration ? "a mass needs an inertia brick and a scheme with the acceleration"
+                                : "the time scheme makes it",
+            ")");
   // The blocks in the layout's order (made by the first assembly); the velocity's must come first.
   model.assemble(false);
   const std::vector<ProblemBlock> blocks = model.blocks();
@@ -91,16 +100,16 @@ ModalResult modal_analysis(Model& model, const ModalOptions& o) {
   const int n = int(model.free_values().size());
   const bool electric = blocks.size() > 1;
   require(blocks.size() <= 2 && (!electric || (blocks[1].name == o.potential && blocks[1].begin == mechanical)),
-          "modal analysis: the system's unknowns must be the velocity '", o.velocity, "' and, optionally, the potential '",
-          o.potential, "'");
+          "modal analysis: the system's unknowns must be the velocity '", o.velocity,
+          "' and, optionally, the potential '", o.potential, "'");
   require(o.modes < mechanical, "modal analysis: ", o.modes, " modes asked of ", mechanical, " free velocity dofs");
 
   // Pick the matrices apart, then put the model back as it was.
   const double u_factor = model.affine_factor(o.displacement), a_factor = model.affine_factor(o.acceleration);
   const std::vector<double> u_history = model.affine_coefficients(o.displacement);
   const std::vector<double> a_history = model.affine_coefficients(o.acceleration);
-  const CsrMatrix base = linear_part(model, o, 0, 0);       // damping A, and the potential's columns
-  const CsrMatrix with_mass = linear_part(model, o, 0, 1);  // + M
+  const CsrMatrix base = linear_part(model, o, 0, 0);            // damping A, and the potential's columns
+  const CsrMatrix with_mass = linear_part(model, o, 0, 1);       // + M
   const CsrMatrix with_stiffness = linear_part(model, o, 1, 0);  // + K_uu and the potential's rows' -C
   model.set_affine(o.displacement, u_factor, u_history);
   model.set_affine(o.acceleration, a_factor, a_history);
@@ -122,8 +131,10 @@ ModalResult modal_analysis(Model& model, const ModalOptions& o) {
     return m;
   };
   const double difference = largest(stiffness - CsrMatrix(stiffness.transpose())), size = largest(stiffness);
-  require(difference <= 1e-9 * size, "modal analysis: the stiffness is not symmetric (a non-symmetric linear brick?), "
-          "largest difference ", difference, " against entries of ", size);
+  require(difference <= 1e-9 * size,
+          "modal analysis: the stiffness is not symmetric (a non-symmetric linear brick?), "
+          "largest difference ",
+          difference, " against entries of ", size);
   mass.conservativeResize(n, n);
 
   const double omega_shift = 2 * std::numbers::pi * o.shift_hz;
@@ -147,7 +158,8 @@ ModalResult modal_analysis(Model& model, const ModalOptions& o) {
   result.velocity_shapes = Eigen::MatrixXd::Zero(model.space(o.velocity).num_dofs(), o.modes);
   if (electric) result.potential_shapes = Eigen::MatrixXd::Zero(model.space(o.potential).num_dofs(), o.modes);
   for (int m = 0; m < o.modes; ++m) {
-    require(lambda[m] > 0, "modal analysis: eigenvalue ", lambda[m], " of mode ", m, " is not positive (a body "
+    require(lambda[m] > 0, "modal analysis: eigenvalue ", lambda[m], " of mode ", m,
+            " is not positive (a body "
             "free to move rigidly, or a system that is not positive definite)");
     result.frequencies_hz.push_back(std::sqrt(lambda[m]) / (2 * std::numbers::pi));
     Eigen::VectorXd global = Eigen::VectorXd::Zero(n);

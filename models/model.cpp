@@ -33,11 +33,11 @@ struct Model::Field {
 // A brick term bound to the mesh, with the model's meaning of each of its couplings.
 struct Model::BoundTerm {
   std::unique_ptr<TermAssembly> assembly;
-  std::vector<std::string> field_names;      // per term field
-  std::vector<std::string> test_unknowns;    // per test
-  std::vector<std::string> trial_fields;     // per coupling
-  std::vector<std::string> trial_unknowns;   // per coupling: the unknown whose columns it fills
-  std::vector<std::string> uncoupled_data;   // data fields read but not differentiated (R0 depends on them)
+  std::vector<std::string> field_names;     // per term field
+  std::vector<std::string> test_unknowns;   // per test
+  std::vector<std::string> trial_fields;    // per coupling
+  std::vector<std::string> trial_unknowns;  // per coupling: the unknown whose columns it fills
+  std::vector<std::string> uncoupled_data;  // data fields read but not differentiated (R0 depends on them)
 };
 
 struct Model::BrickState {
@@ -74,8 +74,7 @@ struct Model::System {
 struct Model::ElementLoops {
   std::exception_ptr failure;
 
-  template <class Run>
-  void run(Run&& loop) {
+  template <class Run> void run(Run&& loop) {
     if (!processes::distributed()) return loop();
     if (failure) return;
     try {
@@ -180,8 +179,8 @@ void Model::add_affine_field(const std::string& name, const std::string& base, s
 void Model::set_affine(const std::string& name, double factor, std::vector<double> history_coefficients) {
   Field& f = field(name);
   require(f.kind == FieldKind::Affine, "Model: '", name, "' is not an affine field");
-  require(history_coefficients.size() == f.history.size(), "Model: affine field '", name, "' has ",
-          f.history.size(), " history fields, got ", history_coefficients.size(), " coefficients");
+  require(history_coefficients.size() == f.history.size(), "Model: affine field '", name, "' has ", f.history.size(),
+          " history fields, got ", history_coefficients.size(), " coefficients");
   require(std::isfinite(factor), "Model: affine factor of '", name, "' is not finite: ", factor);
   f.factor = factor;
   f.coefficients = std::move(history_coefficients);
@@ -276,8 +275,8 @@ void Model::check_brick(const Brick& brick) const {
   const std::string who = "brick '" + brick.name() + "'";
   for (const BrickTerm& bt : brick.terms()) {
     const Term& term = *bt.term;
-    require(mesh_->has_region(bt.region), who, ": unknown region '", bt.region, "' (the mesh has: ",
-            join(mesh_->region_names()), ")");
+    require(mesh_->has_region(bt.region), who, ": unknown region '", bt.region,
+            "' (the mesh has: ", join(mesh_->region_names()), ")");
     const bool cells = mesh_->region_kind(bt.region) == RegionKind::Cells;
     require(cells == (term.integration() == Integration::Cells), who, ": term '", term.name(), "' integrates over ",
             cells ? "faces" : "cells", " but region '", bt.region, "' is a ", cells ? "cell" : "face", " region");
@@ -293,17 +292,17 @@ void Model::check_brick(const Brick& brick) const {
   for (const DirichletCondition& d : brick.dirichlet_conditions()) {
     require(has_field(d.unknown) && field_kind(d.unknown) == FieldKind::Unknown, who, ": Dirichlet condition on '",
             d.unknown, "', which is not an unknown");
-    require(mesh_->has_region(d.region), who, ": unknown region '", d.region, "' (the mesh has: ",
-            join(mesh_->region_names()), ")");
+    require(mesh_->has_region(d.region), who, ": unknown region '", d.region,
+            "' (the mesh has: ", join(mesh_->region_names()), ")");
     for (int c : d.components)
       require(c >= 0 && c < space(d.unknown).num_components(), who, ": component ", c, " of '", d.unknown,
               "' does not exist");
   }
   for (const UniformValueCondition& d : brick.uniform_value_conditions()) {
-    require(has_field(d.unknown) && field_kind(d.unknown) == FieldKind::Unknown, who, ": uniform value of '",
-            d.unknown, "', which is not an unknown");
-    require(mesh_->has_region(d.region), who, ": unknown region '", d.region, "' (the mesh has: ",
-            join(mesh_->region_names()), ")");
+    require(has_field(d.unknown) && field_kind(d.unknown) == FieldKind::Unknown, who, ": uniform value of '", d.unknown,
+            "', which is not an unknown");
+    require(mesh_->has_region(d.region), who, ": unknown region '", d.region,
+            "' (the mesh has: ", join(mesh_->region_names()), ")");
     require(d.component >= 0 && d.component < space(d.unknown).num_components(), who, ": component ", d.component,
             " of '", d.unknown, "' does not exist");
   }
@@ -392,8 +391,8 @@ void Model::bind_brick(int index) {
     if (bound.size() < state.terms.size()) {
       const BoundTerm& old = state.terms[bound.size()];
       for (size_t k = 0; k < b.trial_fields.size(); ++k)
-        require(old.assembly->block(int(k)).nonZeros() == b.assembly->block(int(k)).nonZeros(), "brick '",
-                brick.name(), "' changed the sparsity of its terms in update()");
+        require(old.assembly->block(int(k)).nonZeros() == b.assembly->block(int(k)).nonZeros(), "brick '", brick.name(),
+                "' changed the sparsity of its terms in update()");
     }
     bound.push_back(std::move(b));
   }
@@ -524,8 +523,7 @@ void Model::apply_dirichlet() {
 
 void Model::set_frozen(const std::vector<std::string>& unknowns) {
   for (const std::string& u : unknowns)
-    require(has_field(u) && field_kind(u) == FieldKind::Unknown, "Model: cannot freeze '", u,
-            "': not an unknown");
+    require(has_field(u) && field_kind(u) == FieldKind::Unknown, "Model: cannot freeze '", u, "': not an unknown");
   frozen_ = unknowns;
   std::sort(frozen_.begin(), frozen_.end());
 }
@@ -568,7 +566,8 @@ Model::System& Model::system() {
     for (const BoundTerm& bt : brick_states_[b]->terms)
       for (size_t k = 0; k < bt.trial_fields.size(); ++k) {
         const CsrView block = bt.assembly->block(int(k));
-        const auto rows = s.layout.global_indices(s.layout.field_index(bt.field_names[bt.assembly->term().couplings()[k].test]));
+        const auto rows =
+            s.layout.global_indices(s.layout.field_index(bt.field_names[bt.assembly->term().couplings()[k].test]));
         const auto cols = s.layout.global_indices(s.layout.field_index(bt.trial_unknowns[k]));
         for (int r = 0; r < block.rows(); ++r)
           for (CsrView::InnerIterator it(block, r); it; ++it) {
@@ -643,7 +642,8 @@ bool Model::assemble_nonlinear_rows(Eigen::VectorXd& rows) {
     nonlinear_rows_at_ = {clock_, time_};
   }
   Eigen::VectorXd global = Eigen::VectorXd::Zero(s.layout.size());
-  for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), nonlinear_scratch_.at(u), global);
+  for (const std::string& u : unknown_names_)
+    s.layout.add_to_global(s.layout.field_index(u), nonlinear_scratch_.at(u), global);
   rows = global(s.nonlinear_dofs);
   return true;
 }
@@ -696,8 +696,7 @@ bool Model::residual_derivative(const std::map<std::string, Eigen::VectorXd>& ch
   return true;
 }
 
-template <class Add>
-void Model::for_each_block(const System& s, bool linear, Add&& add) const {
+template <class Add> void Model::for_each_block(const System& s, bool linear, Add&& add) const {
   for (int b = 0; b < int(bricks_.size()); ++b) {
     if (bricks_[b]->linear() != linear) continue;
     const BrickState& state = *brick_states_[b];
@@ -795,7 +794,8 @@ void Model::assemble(bool tangent) {
   // A brick's own unknown is measured at least by the scale of its `like` field (residual_scaling.hpp).
   for (const auto& [name, own] : restricted_) scaling_.at_least_that_of(name, own.like);
   residual_ = Eigen::VectorXd::Zero(s.layout.size());
-  for (const std::string& u : unknown_names_) s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
+  for (const std::string& u : unknown_names_)
+    s.layout.add_to_global(s.layout.field_index(u), field_residuals_.at(u), residual_);
 }
 
 // Zeroes the field residuals, the nonlinear bricks' sums and the scales; returns a zero vector per unknown.
@@ -835,8 +835,8 @@ std::vector<const Eigen::VectorXd*> Model::term_values(const BoundTerm& bt) cons
 
 // A nonlinear brick's element loops at the current values: its residual added into `into` (per unknown it
 // tests, which are returned) and, if asked, its tangent blocks.
-std::set<std::string> Model::run_nonlinear_loops(int index, std::map<std::string, Eigen::VectorXd>& into,
-                                                 bool tangent, ElementLoops& loops) {
+std::set<std::string> Model::run_nonlinear_loops(int index, std::map<std::string, Eigen::VectorXd>& into, bool tangent,
+                                                 ElementLoops& loops) {
   std::set<std::string> touched;
   for (BoundTerm& bt : brick_states_[index]->terms) {
     const std::vector<const Eigen::VectorXd*> values = term_values(bt);
@@ -930,7 +930,8 @@ void Model::add_linear_pieces(int index, const System& s, std::map<std::string, 
   for (const auto& [u, r0] : cache.r0)
     if (kept || !cache.r0_zero.at(u)) ++pieces[u];
   for (const BoundTerm& bt : state.terms)
-    for (size_t k = 0; k < bt.trial_fields.size(); ++k) ++pieces[bt.field_names[bt.assembly->term().couplings()[k].test]];
+    for (size_t k = 0; k < bt.trial_fields.size(); ++k)
+      ++pieces[bt.field_names[bt.assembly->term().couplings()[k].test]];
   std::set<std::string> touched;
   for (const auto& [u, r0] : cache.r0) {
     if (!kept && cache.r0_zero.at(u)) continue;
@@ -975,15 +976,16 @@ void Model::refresh_tangent(System& s) {
 }
 
 Model::ResidualSnapshot Model::take_residual_snapshot() {
-  require(!kept_residuals_in_snapshot_, "Model: take_residual_snapshot() while another snapshot holds the kept residuals");
+  require(!kept_residuals_in_snapshot_,
+          "Model: take_residual_snapshot() while another snapshot holds the kept residuals");
   kept_residuals_in_snapshot_ = true;
   return {residual_, field_residuals_, std::exchange(kept_residuals_, {}), scaling_.residual_by_unknown(),
           scaling_.round_off_by_unknown()};
 }
 
 void Model::restore_residual(ResidualSnapshot snapshot) {
-  require(snapshot.residual.size() == layout().size(), "restore_residual: the snapshot has ",
-          snapshot.residual.size(), " residual entries, the system ", layout().size());
+  require(snapshot.residual.size() == layout().size(), "restore_residual: the snapshot has ", snapshot.residual.size(),
+          " residual entries, the system ", layout().size());
   residual_ = std::move(snapshot.residual);
   field_residuals_ = std::move(snapshot.field_residuals);
   kept_residuals_ = std::move(snapshot.kept_residuals);

@@ -26,8 +26,8 @@
 #include <Eigen/Core>
 
 #include "assembly/dof_layout.hpp"
-#include "assembly/parameters.hpp"
 #include "assembly/fe_space.hpp"
+#include "assembly/parameters.hpp"
 #include "assembly/system_matrix.hpp"
 #include "assembly/term_assembly.hpp"
 #include "bricks/brick.hpp"
@@ -220,8 +220,7 @@ class Model : public DataView, public NonlinearProblem {
   void refresh_brick(int index);
   void refresh_linear_sum(System& s);
   // add(handle, block, factor) for each block of the linear bricks, or of the others.
-  template <class Add>
-  void for_each_block(const System& s, bool linear, Add&& add) const;
+  template <class Add> void for_each_block(const System& s, bool linear, Add&& add) const;
   void require_factors_of_last_tangent(const System& s, const char* what) const;
   // The phases of assemble() (and, for a nonlinear brick's element loops, of assemble_nonlinear_rows()).
   std::map<std::string, Eigen::VectorXd> start_assembly();
@@ -249,16 +248,16 @@ class Model : public DataView, public NonlinearProblem {
   std::map<std::string, std::vector<int>> constrained_;  // per unknown: Dirichlet dofs
   std::vector<DirichletCondition> dirichlet_;
   std::map<std::string, std::vector<std::vector<int>>> tied_;  // per unknown: groups of one value
-  std::map<std::string, BrickUnknown> restricted_;  // bricks' own unknowns, by name
+  std::map<std::string, BrickUnknown> restricted_;             // bricks' own unknowns, by name
   std::vector<std::string> frozen_;
   std::vector<char> owned_cells_;
   std::map<std::vector<std::string>, std::unique_ptr<System>> systems_;
   std::vector<std::pair<std::string, std::function<double(const Model&)>>> diagnostics_;
   std::map<std::string, Eigen::VectorXd> field_residuals_;
   std::map<int, std::map<std::string, Eigen::VectorXd>> kept_residuals_;  // per kept brick, per unknown
-  std::map<std::string, Eigen::VectorXd> zero_residuals_;  // a kept brick's for an unknown it does not test
-  bool kept_residuals_in_snapshot_ = false;  // take_residual_snapshot() holds them
-  ResidualScaling scaling_;  // of the last assembly
+  std::map<std::string, Eigen::VectorXd> zero_residuals_;   // a kept brick's for an unknown it does not test
+  bool kept_residuals_in_snapshot_ = false;                 // take_residual_snapshot() holds them
+  ResidualScaling scaling_;                                 // of the last assembly
   std::map<std::string, ParameterOwner> parameter_owners_;  // per constant a brick reads
   // Per unknown, the nonlinear bricks' residual at the last assemble(true) or assemble_nonlinear_rows(), and
   // the values' version (clock_) and time it is of.

@@ -6,8 +6,8 @@
 
 #include <Eigen/QR>
 
-#include "assembly/error.hpp"
 #include "assembly/cell_geometry.hpp"
+#include "assembly/error.hpp"
 #include "assembly/quadrature.hpp"
 #include "assembly/region_geometry.hpp"
 #include "bricks/voigt.hpp"
@@ -211,7 +211,8 @@ bool SpaceErrorEstimator::serves(const FESpace& other) const {
   return true;
 }
 
-std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const FESpace& space, const Eigen::VectorXd& f) const {
+std::vector<double> SpaceErrorEstimator::recovered_nodal_gradients(const FESpace& space,
+                                                                   const Eigen::VectorXd& f) const {
   if (space.order() != 1) return averaged_nodal_gradients(space, f);
   const Mesh& mesh = space.mesh();
   const int dim = mesh.dim(), components = space.num_components(), width = components * dim;
@@ -272,7 +273,8 @@ SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const FE
           "': the field's space has other cells or scalar dofs than the estimator's");
   const Mesh& mesh = space.mesh();
   const int dim = mesh.dim(), components = space.num_components();
-  const int measured_width = check_measure("space error estimate of '" + field + "'", space, coefficients, measure, weight);
+  const int measured_width =
+      check_measure("space error estimate of '" + field + "'", space, coefficients, measure, weight);
   const int width = components * dim;
   const std::vector<double> nodal = recovered_nodal_gradients(space, coefficients);
   const ReferenceElement& element = space.element();
@@ -304,13 +306,15 @@ SpaceErrorField SpaceErrorEstimator::estimate(const std::string& field, const FE
     const auto dofs = space.cell_scalar_dofs(cell);
     for (size_t i = 0; i < dofs.size(); ++i) {
       for (int c = 0; c < components; ++c) values[i * components + c] = coefficients[space.dof(dofs[i], c)];
-      std::copy_n(nodal.begin() + std::ptrdiff_t(size_t(dofs[i]) * width), width, cell_nodal.begin() + std::ptrdiff_t(i * width));
+      std::copy_n(nodal.begin() + std::ptrdiff_t(size_t(dofs[i]) * width), width,
+                  cell_nodal.begin() + std::ptrdiff_t(i * width));
     }
     double cell_squared = 0, det = 0, discrete_square = 0;
     for (int q = 0; q < nq; ++q) {
       if (q == 0 || !affine) {  // a simplex's map is affine: one Jacobian for all its points
         det = cell_jacobian(mesh, cell, rule.points[q].data(), J);
-        require(det > 0, "space error estimate of '", field, "': cell ", cell, " has det J = ", det, " (inverted cell)");
+        require(det > 0, "space error estimate of '", field, "': cell ", cell, " has det J = ", det,
+                " (inverted cell)");
         inverse_transpose_jacobian(dim, J, det, G);
       }
       if (q == 0 || !constant_gradient) {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <limits>
+#include <map>
 #include <optional>
 
 #include "assembly/error.hpp"
@@ -69,8 +69,10 @@ Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
     require(o.estimate_time_error, "adaptive time steps need the time error estimate (estimate_time_error)");
     require(std::isfinite(a.tolerance) && a.tolerance > 0 && a.tolerance < 1,
             "adaptive time steps: the tolerance must be in (0, 1), got ", a.tolerance);
-    require(std::isfinite(a.max_step) && a.max_step >= 0, "adaptive time steps: max_step must be >= 0 (0: a tenth of "
-            "the span), got ", a.max_step);
+    require(std::isfinite(a.max_step) && a.max_step >= 0,
+            "adaptive time steps: max_step must be >= 0 (0: a tenth of "
+            "the span), got ",
+            a.max_step);
     require(a.safety > 0 && a.safety <= 1, "adaptive time steps: safety must be in (0, 1], got ", a.safety);
     require(a.max_growth > 1 && a.max_growth <= 2, "adaptive time steps: max_growth must be in (1, 2], got ",
             a.max_growth);
@@ -84,7 +86,8 @@ Stepper::Stepper(StepperOptions options) : options_(std::move(options)) {
   if (options_.min_step <= 0) options_.min_step = o.step * 1e-6;
 }
 
-double Stepper::controlled_first_step(Model& model, TimeScheme& scheme, NewtonSolver& newton, StepperState& state) const {
+double Stepper::controlled_first_step(Model& model, TimeScheme& scheme, NewtonSolver& newton,
+                                      StepperState& state) const {
   const AdaptiveSteps& a = *options_.adaptive;
   Checkpoint start;
   save_model_state(model, scheme, start);
@@ -359,8 +362,10 @@ void Stepper::Run::next_step_size(double attempt, double ratio) {
       const double proposed = std::clamp(attempt * factor, o.min_step, a.max_step);
       // A larger step pays when the steps it saves over the rest of the run outweigh a factorisation.
       const double saved_steps = (o.end - state.time) / attempt * (1 - attempt / proposed);
-      if (proposed < attempt || saved_steps > a.factorization_cost) dt = proposed;
-      else dt = std::max(dt, attempt);  // the last step may have been shortened to land on `end`
+      if (proposed < attempt || saved_steps > a.factorization_cost)
+        dt = proposed;
+      else
+        dt = std::max(dt, attempt);  // the last step may have been shortened to land on `end`
     }
   } else if (++state.successes >= o.successes_before_growth && dt < o.step) {
     dt = std::min(o.step, dt * o.growth_factor);
@@ -415,8 +420,10 @@ RunSummary Stepper::Run::summarise() {
 
 RunSummary Stepper::run(Model& model, TimeScheme& scheme, NewtonSolver& newton, const StepperCallbacks& callbacks) {
   Run run(*this, model, scheme, newton, callbacks);
-  if (options_.resume) run.resume();
-  else if (!run.start()) return run.summary;
+  if (options_.resume)
+    run.resume();
+  else if (!run.start())
+    return run.summary;
   while (run.state.time < options_.end - run.tiny) {
     if (run.stopped() || !run.attempt_step()) break;
   }

@@ -25,30 +25,30 @@ enum class Prediction {
 // to continue a run exactly as if it had not stopped (StepperOptions::resume).
 struct StepperState {
   double time = 0;
-  double step_size = 0;      // the size the next attempt tries
-  int steps = 0;             // accepted steps so far
-  int successes = 0;         // good steps since the last cut-back or growth
-  int attempts = 0;          // step attempts so far, accepted and cut back
+  double step_size = 0;  // the size the next attempt tries
+  int steps = 0;         // accepted steps so far
+  int successes = 0;     // good steps since the last cut-back or growth
+  int attempts = 0;      // step attempts so far, accepted and cut back
   int cutbacks = 0;
   int newton_iterations_total = 0;
   int newton_iterations_max_per_step = 0;
-  int rejections = 0;       // adaptive steps: attempts whose estimated error was above the tolerance
-  double last_error = 0;    // adaptive steps: the last accepted step's error over its allowance
+  int rejections = 0;     // adaptive steps: attempts whose estimated error was above the tolerance
+  double last_error = 0;  // adaptive steps: the last accepted step's error over its allowance
   TimeErrorHistory time_error;
 };
 
 // Adaptive time steps: a PI controller (Gustafsson's) on the estimated local error per step: a step is
 // accepted when its relative local error is at most `tolerance` (per step, as CVODE and DASSL control it:
 // a tolerance per unit step would chase every contact event's kink down to min_step, since a kink's local
-// error does not shrink with k; the run's global error is reported beside it). The error controlled is the largest of the reported
-// fields' under the linearised estimate (filtered: stiff modes do not shrink the step), the displacement's
-// under the summed one (whose raw velocity error would chase the stiff modes); a step above it is rejected and retried smaller. The
-// step grows at most by max_growth a step (BDF2 stays zero-stable) and only when the steps a larger size
+// error does not shrink with k; the run's global error is reported beside it). The error controlled is the largest of
+// the reported fields' under the linearised estimate (filtered: stiff modes do not shrink the step), the displacement's
+// under the summed one (whose raw velocity error would chase the stiff modes); a step above it is rejected and retried
+// smaller. The step grows at most by max_growth a step (BDF2 stays zero-stable) and only when the steps a larger size
 // saves over the rest of the run are worth the factorisation a new size costs (factorization_cost, in
 // steps); a rejection and a Newton failure (the stepper's cut-back) both shrink it.
 struct AdaptiveSteps {
-  double tolerance = 1e-3;        // relative RMS time error the run aims at (each field's)
-  double max_step = 0;            // 0: (end - start) / 10
+  double tolerance = 1e-3;  // relative RMS time error the run aims at (each field's)
+  double max_step = 0;      // 0: (end - start) / 10
   double safety = 0.9;
   double max_growth = 2;          // a step at most this many times the last
   double max_cut = 0.2;           // a rejected step is retried at least this large a fraction of itself
@@ -63,12 +63,12 @@ struct StepperOptions {
   double start = 0;
   double end = 1;
   double step = 0.1;
-  double cutback_factor = 0.5;       // a failed step is retried this much smaller ...
-  double min_step = 0;               // ... down to this floor (0: step * 1e-6)
-  double growth_factor = 2;          // after `successes_before_growth` good steps, grow back toward `step`
+  double cutback_factor = 0.5;  // a failed step is retried this much smaller ...
+  double min_step = 0;          // ... down to this floor (0: step * 1e-6)
+  double growth_factor = 2;     // after `successes_before_growth` good steps, grow back toward `step`
   int successes_before_growth = 3;
-  int output_every = 1;              // output callback every N accepted steps (and at the start and the end)
-  int checkpoint_every = 0;          // checkpoint callback every N accepted steps (0: none) and at a stop
+  int output_every = 1;      // output callback every N accepted steps (and at the start and the end)
+  int checkpoint_every = 0;  // checkpoint callback every N accepted steps (0: none) and at a stop
   // Budgets (0: none). A run that hits one stops with a message saying which, its results so far written:
   // a cap on step attempts (accepted and cut back) bounds endless cut-back and regrowth cycles, and a
   // wall-time limit bounds a batch job.
@@ -93,7 +93,7 @@ struct StepRecord {
   int step = 0;  // accepted steps so far (0: the initial state)
   double time = 0;
   double dt = 0;
-  int cutbacks = 0;  // failed attempts before this step was accepted
+  int cutbacks = 0;    // failed attempts before this step was accepted
   int rejections = 0;  // attempts rejected on their estimated error before this one
   NewtonReport newton;
   TimeErrorReport time_error;  // this step's estimate (empty without estimate_time_error)

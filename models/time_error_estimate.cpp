@@ -86,8 +86,8 @@ TimeErrorEstimator::TimeErrorEstimator(const Model& model, const TimeScheme& sch
   for (const std::string& f : all) {
     require(model.has_field(f), "time error estimate: the model has no field '", f, "'");
     if (propagation == TimeErrorPropagation::Summed)
-      require(std::find(integrated_.begin(), integrated_.end(), f) != integrated_.end(),
-              "time error estimate: '", f, "' is not integrated in time (an algebraic field), so only the "
+      require(std::find(integrated_.begin(), integrated_.end(), f) != integrated_.end(), "time error estimate: '", f,
+              "' is not integrated in time (an algebraic field), so only the "
               "linearised estimate gives its error");
     std::vector<char> mask(size_t(model.space(f).num_dofs()), 1);
     if (model.field_kind(f) == FieldKind::Unknown)
@@ -188,7 +188,8 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
   std::vector<std::string> history_fields;  // what the affine fields read: u_prev, v_prev, ...
   for (const std::string& f : affine)
     for (const std::string& h : model.affine_history(f))
-      if (std::find(history_fields.begin(), history_fields.end(), h) == history_fields.end()) history_fields.push_back(h);
+      if (std::find(history_fields.begin(), history_fields.end(), h) == history_fields.end())
+        history_fields.push_back(h);
   const auto coefficient = [&](const std::string& f, const std::string& h) {
     const std::vector<std::string> names = model.affine_history(f);
     const auto it = std::find(names.begin(), names.end(), h);
@@ -286,11 +287,11 @@ TimeErrorEstimator::Propagated TimeErrorEstimator::propagate(Model& model, const
     if (h.ends_with("_prev2")) {
       const std::string last = h.substr(0, h.size() - 1);
       out.history_errors[h] = history.history_errors.count(last) ? history.history_errors.at(last)
-                                                                : Eigen::VectorXd::Zero(model.values(h).size());
+                                                                 : Eigen::VectorXd::Zero(model.values(h).size());
     } else if (h.ends_with("_prev")) {
       const std::string x = h.substr(0, h.size() - 5);
       out.history_errors[h] = from_history.count(x) ? Eigen::VectorXd(from_history.at(x) + from_step.at(x))
-                                                     : Eigen::VectorXd::Zero(model.values(h).size());
+                                                    : Eigen::VectorXd::Zero(model.values(h).size());
     }
   }
   return out;

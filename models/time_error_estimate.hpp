@@ -13,11 +13,11 @@
 //    local errors; the response of the solution, J dx = -(dR/dh) P, is one derivative of the residual and
 //    one solve with the tangent Newton has (NewtonSolver::solve_tangent) for each. The derivative is the
 //    linear bricks' blocks times P (Model::residual_derivative: exact, no element loop) or, where a brick
-//    that is not linear reads the history (a normal compliance reads u), a difference of residuals. What a damped mode forgets
-//    is forgotten, stiff modes (a contact damper's, a fast viscous one's) are filtered out of the local
-//    error as in Shampine's filtered estimates, and the algebraic fields (the potential, the velocity of a
-//    model without inertia) get their induced error. Cost per step: one derivative and one solve
-//    (two of each with the filtered local error adaptive steps need).
+//    that is not linear reads the history (a normal compliance reads u), a difference of residuals. What a damped mode
+//    forgets is forgotten, stiff modes (a contact damper's, a fast viscous one's) are filtered out of the local error
+//    as in Shampine's filtered estimates, and the algebraic fields (the potential, the velocity of a model without
+//    inertia) get their induced error. Cost per step: one derivative and one solve (two of each with the filtered local
+//    error adaptive steps need).
 //  - Summed: the local errors added up, as vectors, for the integrated fields only: no solve, but an
 //    overestimate where the dynamics damp the error (many times over on a stiff contact scene) and
 //    nothing for the algebraic fields.
@@ -42,10 +42,10 @@ using FieldVectors = std::map<std::string, Eigen::VectorXd>;
 
 // What the estimate keeps between steps (in StepperState, so that a checkpoint continues it exactly).
 struct TimeErrorHistory {
-  std::vector<double> times;                                     // of the kept solutions, latest first
+  std::vector<double> times;                                      // of the kept solutions, latest first
   std::map<std::string, std::vector<Eigen::VectorXd>> solutions;  // per integrated field, latest first (up to 3)
-  FieldVectors error;                                            // per reported field: its estimated error
-  FieldVectors history_errors;  // linearised: the errors of the scheme's history fields (u_prev, ...)
+  FieldVectors error;                                             // per reported field: its estimated error
+  FieldVectors history_errors;          // linearised: the errors of the scheme's history fields (u_prev, ...)
   std::map<std::string, double> scale;  // per reported field: its largest RMS so far
   std::vector<LocalErrorTerm> pending;  // accepted steps whose local error awaits enough history
 };
@@ -117,8 +117,8 @@ class TimeErrorEstimator {
   TimeErrorPropagation propagation_;
   bool filter_local_errors_ = false;
   KinematicFields kinematics_;
-  std::vector<std::string> fields_;      // reported
-  std::vector<std::string> integrated_;  // with a local error of their own: u, and v with inertia
+  std::vector<std::string> fields_;                          // reported
+  std::vector<std::string> integrated_;                      // with a local error of their own: u, and v with inertia
   std::map<std::string, std::vector<char>> estimated_dofs_;  // per field: 1 where the dof is estimated
 };
 

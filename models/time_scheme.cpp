@@ -151,8 +151,10 @@ void BDF2::freeze_displacement(Model& model) {
 // ---- theta ------------------------------------------------------------------------------------------
 
 ThetaScheme::ThetaScheme(double theta, KinematicFields fields) : TimeScheme(std::move(fields)), theta_(theta) {
-  require(theta > 0 && theta <= 1, "theta scheme: theta must be in (0, 1] (1/2: Crank-Nicolson, 1: backward Euler), "
-          "got ", theta);
+  require(theta > 0 && theta <= 1,
+          "theta scheme: theta must be in (0, 1] (1/2: Crank-Nicolson, 1: backward Euler), "
+          "got ",
+          theta);
 }
 
 void ThetaScheme::attach(Model& model, bool with_acceleration) {
@@ -251,12 +253,16 @@ std::unique_ptr<TimeScheme> make_time_scheme(const Choice& choice, KinematicFiel
 }  // namespace pc
 
 PC_REGISTER(pc::time_scheme_registry(),
-            {"backward_euler", "u_n = u_{n-1} + k v_n: first order, strongly damping (the paper's)", {},
+            {"backward_euler",
+             "u_n = u_{n-1} + k v_n: first order, strongly damping (the paper's)",
+             {},
              [](const pc::ParameterValues&, pc::KinematicFields f) {
                return std::unique_ptr<pc::TimeScheme>(std::make_unique<pc::BackwardEuler>(std::move(f)));
              }})
 PC_REGISTER(pc::time_scheme_registry(),
-            {"bdf2", "variable-step BDF2: second order, L-stable (first step backward Euler)", {},
+            {"bdf2",
+             "variable-step BDF2: second order, L-stable (first step backward Euler)",
+             {},
              [](const pc::ParameterValues&, pc::KinematicFields f) {
                return std::unique_ptr<pc::TimeScheme>(std::make_unique<pc::BDF2>(std::move(f)));
              }})

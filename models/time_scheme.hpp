@@ -11,7 +11,8 @@
 //   scheme          u_n                                              a_n (with inertia)                   order
 //   backward_euler  u_{n-1} + k v_n                                  (v_n - v_{n-1}) / k                  1
 //   bdf2            (4 u_{n-1} - u_{n-2}) / 3 + (2k/3) v_n           (3 v_n - 4 v_{n-1} + v_{n-2}) / 2k   2
-//   theta           u_{n-1} + k (theta v_n + (1 - theta) v_{n-1})    (v_n - v_{n-1}) / (theta k)          2 if theta = 1/2
+//   theta           u_{n-1} + k (theta v_n + (1 - theta) v_{n-1})    (v_n - v_{n-1}) / (theta k)          2 if theta =
+//   1/2
 //                                                                      - (1 - theta) / theta a_{n-1}        else 1
 // (bdf2 as written for a constant step; see BDF2 for the variable-step form.)
 //
@@ -134,7 +135,7 @@ class BDF2 : public TimeScheme {
 
  private:
   bool acceleration_ = false;
-  int committed_ = 0;        // steps since the start (only "at least one" matters)
+  int committed_ = 0;  // steps since the start (only "at least one" matters)
   double previous_step_ = 0;
   bool euler_step_ = false;
 };
@@ -188,6 +189,7 @@ Registry<TimeSchemeFactory>& time_scheme_registry();
 
 // A scheme by name ({"theta", {{"theta", 0.5}}}); throws pc::Error naming the known schemes, or the
 // parameter out of its range.
-std::unique_ptr<TimeScheme> make_time_scheme(const Choice& choice = {"backward_euler", {}}, KinematicFields fields = {});
+std::unique_ptr<TimeScheme> make_time_scheme(const Choice& choice = {"backward_euler", {}},
+                                             KinematicFields fields = {});
 
 }  // namespace pc

@@ -113,8 +113,7 @@ Shape cell_shape(const Elements& cells) {
   for (int type : cells.types)
     require(element_type(type).order == 1, "the mesh has second-order cells (", names,
             "); only first-order geometry is supported");
-  require(cells.types.size() == 1, "the mesh mixes cell shapes (", names,
-          "); a mesh must have one cell shape");
+  require(cells.types.size() == 1, "the mesh mixes cell shapes (", names, "); a mesh must have one cell shape");
   switch (cells.types[0]) {
     case 2: return Shape::Triangle;
     case 3: return Shape::Quadrilateral;
@@ -147,10 +146,8 @@ class FaceFinder {
  public:
   explicit FaceFinder(const Mesh& mesh) {
     for (int c = 0; c < mesh.num_cells(); ++c)
-      for (int f = 0; f < num_faces(mesh.cell_shape()); ++f)
-        faces_.push_back({key(mesh.face_nodes({c, f})), {c, f}});
-    std::stable_sort(faces_.begin(), faces_.end(),
-                     [](const Entry& a, const Entry& b) { return a.first < b.first; });
+      for (int f = 0; f < num_faces(mesh.cell_shape()); ++f) faces_.push_back({key(mesh.face_nodes({c, f})), {c, f}});
+    std::stable_sort(faces_.begin(), faces_.end(), [](const Entry& a, const Entry& b) { return a.first < b.first; });
   }
 
   // The face with these nodes, or a FaceRef with cell -1.
@@ -351,8 +348,9 @@ std::string read_in_child_process(const std::string& input, const GmshOptions& o
     std::filesystem::remove(msh, ignored);
   };
   const std::string too_fine =
-      is_script(input) ? message(": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?")
-                     : std::string(": is the file a mesh too large for this machine?");
+      is_script(input)
+          ? message(": is the mesh size (mesh.size_factor = ", options.mesh_size_factor, ") far too small?")
+          : std::string(": is the file a mesh too large for this machine?");
   if (over_time) {
     remove_msh();
     fail(doing, " took more than ", options.max_seconds, " s (mesh.max_seconds) and was stopped", too_fine);
@@ -362,11 +360,13 @@ std::string read_in_child_process(const std::string& input, const GmshOptions& o
   if (exited && code == 0 && std::filesystem::exists(msh)) return msh;
   remove_msh();
   if (exited && code == 3 && !is_script(input))
-    throw std::string("reading it ran out of memory (a malformed count in the file, or a mesh too large for this "
-                      "machine)");
+    throw std::string(
+        "reading it ran out of memory (a malformed count in the file, or a mesh too large for this "
+        "machine)");
   if (exited && code == 3)
     fail(doing, " ran out of memory",
-         options.max_memory_bytes > 0 ? " (the limit is " + describe_limit(options.max_memory_bytes) + ")" : "", too_fine);
+         options.max_memory_bytes > 0 ? " (the limit is " + describe_limit(options.max_memory_bytes) + ")" : "",
+         too_fine);
   if (exited && code == 2) throw with_line_hint(input, error);
   if (exited && is_script(input))
     fail("the script ended gmsh (exit status ", code, ") before its mesh was written: does it call 'Exit'?");
@@ -457,8 +457,7 @@ Mesh read_msh(const std::string& msh, const GmshOptions& options) {
 Mesh import_gmsh_in_module(const std::string& path, const GmshOptions& options) {
   require(std::filesystem::exists(path), "gmsh: cannot open '", path, "': no such file");
   require(std::filesystem::is_regular_file(path), "gmsh: cannot open '", path, "': not a regular file");
-  require(options.mesh_size_factor > 0, "gmsh: mesh_size_factor must be positive, got ",
-          options.mesh_size_factor);
+  require(options.mesh_size_factor > 0, "gmsh: mesh_size_factor must be positive, got ", options.mesh_size_factor);
   const std::lock_guard lock(gmsh_mutex);
   // gmsh 4.8 throws its error messages as std::string.
   try {
@@ -495,7 +494,7 @@ Mesh import_gmsh_in_module(const std::string& path, const GmshOptions& options) 
 
 // The module's one entry point, looked up by name (unmangled) by the loader.
 extern "C" __attribute__((visibility("default"))) void piezocontact_gmsh_import(const std::string& path,
-                                                                              const pc::GmshOptions& options,
-                                                                              std::optional<pc::Mesh>& mesh) {
+                                                                                const pc::GmshOptions& options,
+                                                                                std::optional<pc::Mesh>& mesh) {
   mesh.emplace(pc::import_gmsh_in_module(path, options));
 }

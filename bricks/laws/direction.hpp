@@ -21,8 +21,7 @@
 
 namespace pc {
 
-template <class S, class Magnitude>
-void scaled_direction(const S* r, int dim, const Magnitude& g, S* out) {
+template <class S, class Magnitude> void scaled_direction(const S* r, int dim, const Magnitude& g, S* out) {
   using std::sqrt;
   double s = 0;
   for (int i = 0; i < dim; ++i) s = std::max(s, std::abs(value_of(r[i])));
@@ -41,8 +40,7 @@ void scaled_direction(const S* r, int dim, const Magnitude& g, S* out) {
 // out = r / sqrt(|r|^2 + eps^2), the slip direction smoothed over a velocity eps: scaled_direction with
 // g(rho) = rho / sqrt(rho^2 + eps^2), written in rho / eps below eps and in eps / rho above, so that
 // neither side squares a large number (eps from 1e-300 to 1e300, |r| up to 1e300).
-template <class S>
-void regularized_direction(const S* r, int dim, double eps, S* out) {
+template <class S> void regularized_direction(const S* r, int dim, double eps, S* out) {
   scaled_direction(
       r, dim,
       [eps](const auto& rho) {

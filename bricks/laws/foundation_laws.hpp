@@ -23,15 +23,12 @@ struct LinearConductance {
   static constexpr bool uses_normal_pressure = false;
 
   static constexpr auto parameters() {
-    return std::array{law_parameter("k_e", &LinearConductance::k_e, "C/(V m^2)",
-                                    "conductance: D.n = k_e (phi - phi_f)", Range::at_least(0), Required::yes),
+    return std::array{law_parameter("k_e", &LinearConductance::k_e, "C/(V m^2)", "conductance: D.n = k_e (phi - phi_f)",
+                                    Range::at_least(0), Required::yes),
                       law_parameter("phi_f", &LinearConductance::phi_f, "V", "potential of the foundation",
                                     Range::any(), Required::yes)};
   }
-  template <class S>
-  S operator()(const S& phi, const S& /*pressure*/) const {
-    return k_e * (phi - phi_f);
-  }
+  template <class S> S operator()(const S& phi, const S& /*pressure*/) const { return k_e * (phi - phi_f); }
 };
 
 // D.n = k_e s(p) (phi - phi_f) with s(p) = p_+^2 / (p_+^2 + p_ref^2): charge flows only where the body
@@ -55,13 +52,11 @@ struct PressureActivatedConductance {
                       law_parameter("p_ref", &PressureActivatedConductance::p_ref, "Pa",
                                     "pressure over which conduction switches on", Range::positive(), Required::yes)};
   }
-  template <class S>
-  S operator()(const S& phi, const S& pressure) const {
+  template <class S> S operator()(const S& phi, const S& pressure) const {
     return k_e * activation(pressure) * (phi - phi_f);
   }
   // s(p), written in x = p_+ / p_ref on both sides of x = 1 so that x^2 neither overflows nor gives inf/inf.
-  template <class S>
-  S activation(const S& pressure) const {
+  template <class S> S activation(const S& pressure) const {
     const S x = positive_part(pressure) / p_ref;
     if (x <= 1.0) return x * x / (1.0 + x * x);
     const S inverse = 1.0 / x;

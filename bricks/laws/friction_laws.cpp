@@ -11,5 +11,6 @@ PC_REGISTER_FRICTION_LAW(pc::RegularizedCoulomb, "coulomb",
 PC_REGISTER_FRICTION_LAW(pc::RegularizedTresca, "tresca", "p_tau = g v_tau / sqrt(|v_tau|^2 + eps^2)")
 PC_REGISTER(pc::friction_law_registry(),
             (pc::paired_law_entry<pc::AlartCurnierFrictionBrick, pc::AugmentedCoulomb>(
-                "coulomb_exact", "Coulomb's law without regularisation: a friction multiplier on the contact surface, "
-                                 "lambda = P_B(lambda + r v_tau), |B| = mu |p_nu| (Alart-Curnier, semismooth Newton)")))
+                "coulomb_exact",
+                "Coulomb's law without regularisation: a friction multiplier on the contact surface, "
+                "lambda = P_B(lambda + r v_tau), |B| = mu |p_nu| (Alart-Curnier, semismooth Newton)")))

@@ -26,8 +26,7 @@ struct ViscousFriction {
     return std::array{law_parameter("c_tau", &ViscousFriction::c_tau, "Pa s/m",
                                     "friction coefficient: p_tau = c_tau v_tau", Range::at_least(0), Required::yes)};
   }
-  template <class S>
-  void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
     for (int i = 0; i < dim; ++i) out[i] = c_tau * r[i];
   }
 };
@@ -40,8 +39,8 @@ struct RegularizedCoulomb {
 
   static constexpr bool affine = false;
   static constexpr bool dissipative = true;
-  static constexpr bool monotone = true;  // in r, at one pressure
-  static constexpr bool bounded = true;   // |p_tau| < mu |p_nu|
+  static constexpr bool monotone = true;   // in r, at one pressure
+  static constexpr bool bounded = true;    // |p_tau| < mu |p_nu|
   static constexpr bool symmetric = true;  // in r; the pressure coupling is not, and the brick knows it
   static constexpr bool uses_normal_pressure = true;
 
@@ -52,8 +51,7 @@ struct RegularizedCoulomb {
         law_parameter("eps", &RegularizedCoulomb::eps, "m/s", "regularisation: slip velocity of the smoothing",
                       Range::positive(), Required::yes)};
   }
-  template <class S>
-  void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
     // |p_nu| with the right-sided derivative at 0, like the normal laws that produce it.
     const S threshold = mu * (normal_pressure < 0.0 ? -normal_pressure : normal_pressure);
     regularized_direction(r, dim, eps, out);
@@ -74,12 +72,12 @@ struct RegularizedTresca {
   static constexpr bool uses_normal_pressure = false;
 
   static constexpr auto parameters() {
-    return std::array{law_parameter("g", &RegularizedTresca::g, "Pa", "slip bound", Range::at_least(0), Required::yes),
-                      law_parameter("eps", &RegularizedTresca::eps, "m/s",
-                                    "regularisation: slip velocity of the smoothing", Range::positive(), Required::yes)};
+    return std::array{
+        law_parameter("g", &RegularizedTresca::g, "Pa", "slip bound", Range::at_least(0), Required::yes),
+        law_parameter("eps", &RegularizedTresca::eps, "m/s", "regularisation: slip velocity of the smoothing",
+                      Range::positive(), Required::yes)};
   }
-  template <class S>
-  void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& /*normal_pressure*/, S* out) const {
     regularized_direction(r, dim, eps, out);
     for (int i = 0; i < dim; ++i) out[i] *= g;
   }

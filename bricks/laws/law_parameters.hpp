@@ -23,8 +23,7 @@ namespace pc {
 
 enum class Required { no, yes };
 
-template <class Law>
-struct LawParameter {
+template <class Law> struct LawParameter {
   const char* name;
   double Law::*member;
   const char* unit;
@@ -40,11 +39,12 @@ constexpr LawParameter<Law> law_parameter(const char* name, double Law::*member,
 }
 
 template <class Law>
-concept DeclaresParameters = requires { Law::parameters(); };
+concept DeclaresParameters = requires {
+  Law::parameters();
+};
 
 // The declarations, with defaults taken from a default-constructed law.
-template <DeclaresParameters Law>
-std::vector<ParameterDeclaration> parameter_declarations() {
+template <DeclaresParameters Law> std::vector<ParameterDeclaration> parameter_declarations() {
   std::vector<ParameterDeclaration> out;
   const Law defaults{};
   for (const LawParameter<Law>& p : Law::parameters()) {
@@ -57,8 +57,7 @@ std::vector<ParameterDeclaration> parameter_declarations() {
 
 // The law's parameter values by name, e.g. {{"c_nu", 1e12}}: what a driver writes into the model's
 // constants (Model::set_constants(law_values(LinearDampedResponse{1e12}))).
-template <DeclaresParameters Law>
-ParameterValues law_values(const Law& law) {
+template <DeclaresParameters Law> ParameterValues law_values(const Law& law) {
   ParameterValues out;
   for (const LawParameter<Law>& p : Law::parameters()) out[p.name] = law.*(p.member);
   return out;

@@ -14,10 +14,7 @@
 namespace pc {
 
 // r_+ = max(r, 0), keeping the derivative 1 at r = 0 (right-sided).
-template <class S>
-S positive_part(const S& r) {
-  return r < 0.0 ? S(0.0) : r;
-}
+template <class S> S positive_part(const S& r) { return r < 0.0 ? S(0.0) : r; }
 
 // p_nu(r) = c_nu r_+, paper (12).
 struct LinearDampedResponse {
@@ -29,12 +26,10 @@ struct LinearDampedResponse {
 
   static constexpr auto parameters() {
     return std::array{law_parameter("c_nu", &LinearDampedResponse::c_nu, "Pa s/m",
-                                    "damping coefficient: p_nu = c_nu max(v_nu, 0)", Range::at_least(0), Required::yes)};
+                                    "damping coefficient: p_nu = c_nu max(v_nu, 0)", Range::at_least(0),
+                                    Required::yes)};
   }
-  template <class S>
-  S operator()(const S& r) const {
-    return c_nu * positive_part(r);
-  }
+  template <class S> S operator()(const S& r) const { return c_nu * positive_part(r); }
 };
 
 // p_nu(r) = c_nu r_+^m with m >= 1 (m = 1 is LinearDampedResponse).
@@ -47,12 +42,12 @@ struct PowerDampedResponse {
   static constexpr bool uses_displacement = false;
 
   static constexpr auto parameters() {
-    return std::array{law_parameter("c_nu", &PowerDampedResponse::c_nu, "Pa (s/m)^m",
-                                    "damping coefficient: p_nu = c_nu max(v_nu, 0)^m", Range::at_least(0), Required::yes),
-                      law_parameter("m", &PowerDampedResponse::m, "1", "exponent", Range::at_least(1))};
+    return std::array{
+        law_parameter("c_nu", &PowerDampedResponse::c_nu, "Pa (s/m)^m",
+                      "damping coefficient: p_nu = c_nu max(v_nu, 0)^m", Range::at_least(0), Required::yes),
+        law_parameter("m", &PowerDampedResponse::m, "1", "exponent", Range::at_least(1))};
   }
-  template <class S>
-  S operator()(const S& r) const {
+  template <class S> S operator()(const S& r) const {
     using std::pow;
     return r < 0.0 ? S(0.0) : c_nu * pow(r, m);
   }
@@ -75,8 +70,7 @@ struct NormalCompliance {
                       law_parameter("m", &NormalCompliance::m, "1", "exponent", Range::at_least(1)),
                       law_parameter("gap", &NormalCompliance::gap, "m", "initial gap to the foundation", Range::any())};
   }
-  template <class S>
-  S operator()(const S& u_nu) const {
+  template <class S> S operator()(const S& u_nu) const {
     using std::pow;
     const S penetration = u_nu - gap;
     return penetration < 0.0 ? S(0.0) : c_nu * pow(penetration, m);

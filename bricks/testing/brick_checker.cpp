@@ -14,7 +14,7 @@ namespace pc {
 namespace {
 
 using State = std::map<std::string, Eigen::VectorXd>;
-using Residuals = std::map<std::string, Eigen::VectorXd>;                          // by test field
+using Residuals = std::map<std::string, Eigen::VectorXd>;                         // by test field
 using Tangents = std::map<std::pair<std::string, std::string>, Eigen::MatrixXd>;  // by (test, trial)
 
 constexpr double kTime = 0.3;  // any time: sources are checked at a time that is not special
@@ -169,8 +169,7 @@ void check_tangent(BrickAssembly& assembly, const BrickCheckSetup& setup, const 
   }
 }
 
-void check_linear(BrickAssembly& assembly, const BrickCheckSetup& setup, const State& state,
-                  BrickCheckReport& report) {
+void check_linear(BrickAssembly& assembly, const BrickCheckSetup& setup, const State& state, BrickCheckReport& report) {
   State zero = state;
   for (auto& [name, x] : zero) x.setZero();
   Residuals r0, rx;

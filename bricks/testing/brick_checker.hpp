@@ -2,8 +2,8 @@
 // A harness that checks any brick alone on a small mesh, in the spirit of GetFEM's
 // check_stiffness_matrix_and_rhs: its tangent against central finite differences of its residual at
 // random states (each column at the steps fd_step * {0.1, 1, 10, 100}, keeping the best, and not counting
-// differences below the round-off 8 eps_mach |R| / h of a step), its `linear` claim (R(x) = K x + R(0) exactly), its `symmetric` claim (K = K^T), and
-// finite residuals and tangents at extreme states. Usable from GoogleTest:
+// differences below the round-off 8 eps_mach |R| / h of a step), its `linear` claim (R(x) = K x + R(0) exactly), its
+// `symmetric` claim (K = K^T), and finite residuals and tangents at extreme states. Usable from GoogleTest:
 //
 //   BrickCheckSetup setup = BrickCheckSetup::square(Shape::Triangle, 1);  // fields v (2 comp.), phi, ...
 //   auto report = check_brick(my_brick, my_data, setup);
@@ -44,7 +44,7 @@ struct BrickCheckSetup {
   std::map<std::string, std::pair<double, double>> ranges;
   int samples = 3;
   unsigned seed = 12345;
-  double fd_step = 1e-6;         // relative to the magnitude of the perturbed coefficient (at least 1)
+  double fd_step = 1e-6;  // relative to the magnitude of the perturbed coefficient (at least 1)
   // On max(0, |K e_j - FD_j| - 8 eps_mach |R| / h) / max(|FD_j|, |K e_j|), the best over the steps.
   double fd_tolerance = 1e-6;
   double linear_tolerance = 1e-10;

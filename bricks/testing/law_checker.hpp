@@ -65,9 +65,9 @@ struct LawCheckOptions {
   // one. Random arguments keep kink_clearance away from them (and friction velocities from |r| = 0).
   std::vector<double> kinks = {0};
   double kink_clearance = 1e-3;
-  bool derivatives = true;  // false for parameters too extreme for finite differences to resolve
-  double fd_step = 1e-6;    // relative to max(1, |x|)
-  double tolerance = 1e-6;  // on max |dual - fd| / max(|dual|, |fd|) over the Jacobian's entries
+  bool derivatives = true;       // false for parameters too extreme for finite differences to resolve
+  double fd_step = 1e-6;         // relative to max(1, |x|)
+  double tolerance = 1e-6;       // on max |dual - fd| / max(|dual|, |fd|) over the Jacobian's entries
   double kink_tolerance = 1e-4;  // at a kink: on the right-sided quotients' last error over the scale
   double affine_tolerance = 1e-12;
   std::vector<double> dissipation_scales = {1e-3, 1, 1e3, 1e6};
@@ -107,8 +107,7 @@ using Values = std::array<double, kMaxOutputs>;
 using Jacobian = std::array<Point, kMaxOutputs>;  // [output][input]
 
 // A law seen as a map of n inputs to m outputs; evaluate(const S* x, S* out) is generic in the scalar.
-template <class Evaluate>
-struct LawMap {
+template <class Evaluate> struct LawMap {
   Evaluate evaluate;
   int n;
   int m;
@@ -137,8 +136,7 @@ struct LawMap {
   }
 };
 
-template <class Evaluate>
-LawMap<Evaluate> make_map(Evaluate evaluate, int n, int m, std::string what) {
+template <class Evaluate> LawMap<Evaluate> make_map(Evaluate evaluate, int n, int m, std::string what) {
   require(n >= 1 && n <= kMaxInputs && m >= 1 && m <= kMaxOutputs, "law check: a law of ", n, " inputs and ", m,
           " outputs (at most ", kMaxInputs, " and ", kMaxOutputs, ")");
   return {std::move(evaluate), n, m, std::move(what)};
@@ -155,8 +153,7 @@ inline std::string format(const double* x, int n) {
 
 // Central finite differences of every input but `skip` (-1: none), with steps h_i = step * max(1, |x_i|):
 // (f(x + h e_i) - f(x - h e_i)) / 2h, truncation error O(h^2).
-template <class Map>
-Jacobian central_differences(const Map& f, const Point& x, int skip, double step) {
+template <class Map> Jacobian central_differences(const Map& f, const Point& x, int skip, double step) {
   Jacobian J{};
   for (int i = 0; i < f.inputs(); ++i) {
     if (i == skip) continue;
@@ -202,8 +199,7 @@ inline std::string format_jacobian(const Jacobian& J, int n, int m) {
 }
 
 // The Dual Jacobian at x, with derivative_scale (the largest derivative seen so far) updated.
-template <class Map>
-Jacobian dual_jacobian(const Map& f, const Point& x, double& derivative_scale) {
+template <class Map> Jacobian dual_jacobian(const Map& f, const Point& x, double& derivative_scale) {
   const Jacobian dual = f.jacobian(x);
   for (int k = 0; k < f.outputs(); ++k)
     for (int i = 0; i < f.inputs(); ++i)
@@ -217,8 +213,8 @@ Jacobian dual_jacobian(const Map& f, const Point& x, double& derivative_scale) {
 // h, round-off grows as eps_mach |f| / h, and the best step lies between); a wrong one matches none.
 // Entries below 1e-6 of the largest derivative seen are compared absolutely.
 template <class Map>
-void check_derivative(const Map& f, const Point& x, int skip, const LawCheckOptions& options,
-                      double& derivative_scale, LawCheckReport& report) {
+void check_derivative(const Map& f, const Point& x, int skip, const LawCheckOptions& options, double& derivative_scale,
+                      LawCheckReport& report) {
   if (skip >= 0 && f.inputs() == 1) return;
   const Jacobian dual = dual_jacobian(f, x, derivative_scale);
   const double floor = 1e-6 * derivative_scale;
@@ -272,7 +268,8 @@ void check_kink(const Map& f, const Point& x, int i, const LawCheckOptions& opti
       step.quotient[k] = (fa[k] - f0[k]) / step.h;
       step.error = std::max(step.error, std::abs(step.quotient[k] - dual[k][i]));
       step.round_off = std::max(step.round_off, 4 * kEpsilon * std::max(std::abs(f0[k]), std::abs(fa[k])) / step.h);
-      if (!std::isfinite(step.quotient[k]) || !std::isfinite(dual[k][i])) step.error = std::numeric_limits<double>::infinity();
+      if (!std::isfinite(step.quotient[k]) || !std::isfinite(dual[k][i]))
+        step.error = std::numeric_limits<double>::infinity();
     }
     steps.push_back(step);
   }
@@ -281,19 +278,20 @@ void check_kink(const Map& f, const Point& x, int i, const LawCheckOptions& opti
   if (!std::isfinite(scale)) scale = std::numeric_limits<double>::infinity();
   scale = std::max(scale, std::numeric_limits<double>::min());
   const double tolerance = options.kink_tolerance * scale;
-  std::vector<double> errors;  // beyond round-off, at the steps round-off leaves usable
+  std::vector<double> errors;     // beyond round-off, at the steps round-off leaves usable
   for (const Step& step : steps)  // a quotient that matches is usable whatever its round-off
-    if (step.round_off <= tolerance || step.error <= tolerance) errors.push_back(std::max(0.0, step.error - step.round_off));
+    if (step.round_off <= tolerance || step.error <= tolerance)
+      errors.push_back(std::max(0.0, step.error - step.round_off));
   ++report.checks;
   auto fail = [&](const std::string& why) {
     Values quotient{};
     for (int k = 0; k < f.outputs(); ++k) quotient[k] = steps.back().quotient[k];
     Point column{};
     for (int k = 0; k < f.outputs(); ++k) column[k] = dual[k][i];
-    report.failures.push_back(message(f.what, " at the kink ", format(x.data(), f.n), ": Dual derivative in input ",
-                                      i, " ", format(column.data(), f.m), " is not the limit of the right-sided ",
-                                      "difference quotients (", format(quotient.data(), f.m), " at h = ",
-                                      steps.back().h, "): ", why));
+    report.failures.push_back(message(f.what, " at the kink ", format(x.data(), f.n), ": Dual derivative in input ", i,
+                                      " ", format(column.data(), f.m), " is not the limit of the right-sided ",
+                                      "difference quotients (", format(quotient.data(), f.m),
+                                      " at h = ", steps.back().h, "): ", why));
   };
   if (errors.size() < 4) return fail(message("round-off leaves ", errors.size(), " of ", steps.size(), " steps"));
   for (size_t j = 0; j + 1 < errors.size(); ++j)
@@ -327,15 +325,14 @@ void check_affine(const Map& f, const Point& x, const LawCheckOptions& options, 
     }
     size = std::max({size, std::abs(fx[k]), std::numeric_limits<double>::min()});
     if (!(std::abs(fx[k] - predicted) <= options.affine_tolerance * size)) {
-      report.failures.push_back(message(f.what, " claims affine, but output ", k, " at ", format(x.data(), f.n),
-                                        " is ", fx[k], " while f(0) + f'(0) x = ", predicted));
+      report.failures.push_back(message(f.what, " claims affine, but output ", k, " at ", format(x.data(), f.n), " is ",
+                                        fx[k], " while f(0) + f'(0) x = ", predicted));
       return;
     }
   }
 }
 
-template <class Map>
-void check_finite(const Map& f, const Point& x, LawCheckReport& report) {
+template <class Map> void check_finite(const Map& f, const Point& x, LawCheckReport& report) {
   Values value{};
   const Jacobian J = f.jacobian(x, &value);
   ++report.checks;
@@ -351,8 +348,7 @@ void check_finite(const Map& f, const Point& x, LawCheckReport& report) {
 }
 
 // The law's values lie in the ranges it declares for them (a law that declares none passes).
-template <class Law>
-void check_declared_ranges(const Law& law, LawCheckReport& report) {
+template <class Law> void check_declared_ranges(const Law& law, LawCheckReport& report) {
   if constexpr (DeclaresParameters<Law>) {
     const ParameterValues values = law_values(law);
     for (const ParameterDeclaration& d : parameter_declarations<Law>()) {
@@ -409,7 +405,8 @@ void check_rays(const Map& f, int dim, const LawCheckOptions& options, LawCheckR
         Point direction{};  // unit length
         for (int d = 0; d < dim; ++d)
           direction[d] = diagonal ? sign * (d % 2 ? -1.0 : 1.0) / std::sqrt(double(dim)) : (d == 0 ? sign : 0.0);
-        const std::string ray = message(f.what, " along r = s ", format(direction.data(), dim), " at p_nu = ", pressure);
+        const std::string ray =
+            message(f.what, " along r = s ", format(direction.data(), dim), " at p_nu = ", pressure);
         std::vector<double> along, size;  // p . d and |p| at each magnitude
         for (double s : magnitudes) {
           Point x{};
@@ -459,8 +456,7 @@ void check_rays(const Map& f, int dim, const LawCheckOptions& options, LawCheckR
 }  // namespace law_check
 
 // A scalar law p(r) (normal laws): `template <class S> S operator()(const S& r) const`.
-template <class Law>
-LawCheckReport check_scalar_law(const Law& law, const LawCheckOptions& options = {}) {
+template <class Law> LawCheckReport check_scalar_law(const Law& law, const LawCheckOptions& options = {}) {
   using namespace law_check;
   LawCheckReport report;
   report.law = options.name;
@@ -500,8 +496,7 @@ LawCheckReport check_scalar_law(const Law& law, const LawCheckOptions& options =
 }
 
 // A friction law p_tau(r, p_nu): `template <class S> void operator()(const S* r, int dim, const S& p, S* out)`.
-template <class Law>
-LawCheckReport check_friction_law(const Law& law, const LawCheckOptions& options = {}) {
+template <class Law> LawCheckReport check_friction_law(const Law& law, const LawCheckOptions& options = {}) {
   using namespace law_check;
   LawCheckReport report;
   report.law = options.name;
@@ -527,8 +522,7 @@ LawCheckReport check_friction_law(const Law& law, const LawCheckOptions& options
       return x;
     };
     for (int s = 0; s < options.samples; ++s) {
-      const Point x =
-          random_point(draw_away(rng, 0, options.pressure_high, options.kinks, options.kink_clearance));
+      const Point x = random_point(draw_away(rng, 0, options.pressure_high, options.kinks, options.kink_clearance));
       if (options.derivatives) check_derivative(f, x, -1, options, derivative_scale, report);
       if constexpr (law_affine<Law>) check_affine(f, x, options, report);
     }
@@ -549,8 +543,8 @@ LawCheckReport check_friction_law(const Law& law, const LawCheckOptions& options
           for (int d = 0; d < dim; ++d) power += p[d] * x[d];
           ++report.checks;
           if (!(power >= 0))
-            report.failures.push_back(message(f.what, " claims dissipative, but p . r = ", power, " at ",
-                                              format(x.data(), dim + 1)));
+            report.failures.push_back(
+                message(f.what, " claims dissipative, but p . r = ", power, " at ", format(x.data(), dim + 1)));
         }
     }
     // Extreme velocities along an axis, along a diagonal, and mixing the largest and smallest magnitudes,
@@ -592,7 +586,8 @@ LawCheckReport check_friction_law(const Law& law, const LawCheckOptions& options
           ++report.checks;
           if (!(change >= -8 * std::numeric_limits<double>::epsilon() * size))
             report.failures.push_back(message(f.what, " claims monotone, but (p(a) - p(b)) . (a - b) = ", change,
-                                              " at a = ", format(a.data(), dim + 1), ", b = ", format(b.data(), dim + 1)));
+                                              " at a = ", format(a.data(), dim + 1),
+                                              ", b = ", format(b.data(), dim + 1)));
         }
     }
     check_rays<Law>(f, dim, options, report);
@@ -601,8 +596,7 @@ LawCheckReport check_friction_law(const Law& law, const LawCheckOptions& options
 }
 
 // A foundation law D.n(phi, p_nu): `template <class S> S operator()(const S& phi, const S& pressure) const`.
-template <class Law>
-LawCheckReport check_foundation_law(const Law& law, const LawCheckOptions& options = {}) {
+template <class Law> LawCheckReport check_foundation_law(const Law& law, const LawCheckOptions& options = {}) {
   using namespace law_check;
   LawCheckReport report;
   report.law = options.name;
@@ -621,8 +615,7 @@ LawCheckReport check_foundation_law(const Law& law, const LawCheckOptions& optio
     if constexpr (law_affine<Law>) check_affine(f, x, options, report);
   }
   if (options.derivatives)
-    for (double kink : options.kinks)
-      check_kink(f, Point{potential(rng), kink}, 1, options, derivative_scale, report);
+    for (double kink : options.kinks) check_kink(f, Point{potential(rng), kink}, 1, options, derivative_scale, report);
   if constexpr (law_dissipative<Law>) {
     for (double scale : options.dissipation_scales)
       for (int s = 0; s < options.samples; ++s) {

@@ -15,25 +15,23 @@ struct VelocityWeakeningCoulomb {
   double mu_s = 0, mu_k = 0, v_c = 1, eps = 1;
 
   static constexpr bool affine = false;
-  static constexpr bool dissipative = true;            // mu(s) >= 0, so p_tau . v_tau >= 0
-  static constexpr bool symmetric = true;              // p = g(|r|) r has a symmetric Jacobian
-  static constexpr bool uses_normal_pressure = true;   // reads p_nu from the paired normal brick
+  static constexpr bool dissipative = true;           // mu(s) >= 0, so p_tau . v_tau >= 0
+  static constexpr bool symmetric = true;             // p = g(|r|) r has a symmetric Jacobian
+  static constexpr bool uses_normal_pressure = true;  // reads p_nu from the paired normal brick
 
   static constexpr auto parameters() {
     using pc::law_parameter, pc::Range, pc::Required;
-    return std::array{
-        law_parameter("mu_s", &VelocityWeakeningCoulomb::mu_s, "1", "static friction coefficient", Range::at_least(0),
-                      Required::yes),
-        law_parameter("mu_k", &VelocityWeakeningCoulomb::mu_k, "1", "kinetic friction coefficient", Range::at_least(0),
-                      Required::yes),
-        law_parameter("v_c", &VelocityWeakeningCoulomb::v_c, "m/s", "slip speed over which mu falls to mu_k",
-                      Range::positive(), Required::yes),
-        law_parameter("eps", &VelocityWeakeningCoulomb::eps, "m/s", "regularisation of the slip direction",
-                      Range::positive(), Required::yes)};
+    return std::array{law_parameter("mu_s", &VelocityWeakeningCoulomb::mu_s, "1", "static friction coefficient",
+                                    Range::at_least(0), Required::yes),
+                      law_parameter("mu_k", &VelocityWeakeningCoulomb::mu_k, "1", "kinetic friction coefficient",
+                                    Range::at_least(0), Required::yes),
+                      law_parameter("v_c", &VelocityWeakeningCoulomb::v_c, "m/s",
+                                    "slip speed over which mu falls to mu_k", Range::positive(), Required::yes),
+                      law_parameter("eps", &VelocityWeakeningCoulomb::eps, "m/s",
+                                    "regularisation of the slip direction", Range::positive(), Required::yes)};
   }
 
-  template <class S>
-  void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
     using std::exp, std::sqrt;
     S speed2(0.0);
     for (int i = 0; i < dim; ++i) speed2 += r[i] * r[i];

@@ -59,9 +59,8 @@ std::vector<double> values_at_nodes(const BoundaryNodes& nodes, const FESpace& s
   std::vector<double> values(nodes.cells.size());
   std::vector<double> all_components(space.num_components());
   for (size_t k = 0; k < nodes.cells.size(); ++k) {
-    require(space.has_cell(nodes.cells[k]), "values_at_nodes: the field's space does not contain cell ",
-            nodes.cells[k], " holding the node at (", nodes.points[k][0], ", ", nodes.points[k][1], ", ",
-            nodes.points[k][2], ")");
+    require(space.has_cell(nodes.cells[k]), "values_at_nodes: the field's space does not contain cell ", nodes.cells[k],
+            " holding the node at (", nodes.points[k][0], ", ", nodes.points[k][1], ", ", nodes.points[k][2], ")");
     space.evaluate_in_cell(coefficients, nodes.cells[k], nodes.reference_points[k].data(), all_components.data());
     values[k] = all_components[component];
   }

@@ -17,9 +17,9 @@ namespace pc {
 // a P2 displacement, for instance.
 struct BoundaryNodes {
   const Mesh* mesh = nullptr;
-  std::vector<int> scalar_dofs;                          // of the space the nodes were taken from
-  std::vector<std::array<double, 3>> points;             // physical coordinates
-  std::vector<int> cells;                                // a cell holding the node
+  std::vector<int> scalar_dofs;                         // of the space the nodes were taken from
+  std::vector<std::array<double, 3>> points;            // physical coordinates
+  std::vector<int> cells;                               // a cell holding the node
   std::vector<std::array<double, 3>> reference_points;  // the node's reference coordinates in that cell
 };
 

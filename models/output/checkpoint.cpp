@@ -1,7 +1,7 @@
 #include "models/output/checkpoint.hpp"
 
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -27,10 +27,7 @@ class Writer {
     out_.write(data, std::streamsize(size));
     hash_ = content_hash(std::string_view(data, size), hash_);
   }
-  template <class T>
-  void put(const T& value) {
-    bytes(reinterpret_cast<const char*>(&value), sizeof value);
-  }
+  template <class T> void put(const T& value) { bytes(reinterpret_cast<const char*>(&value), sizeof value); }
   void text(const std::string& text) {
     put(std::uint64_t(text.size()));
     bytes(text.data(), text.size());
@@ -50,8 +47,7 @@ class Writer {
 class Reader {
  public:
   Reader(const std::string& path, std::string_view bytes) : path_(path), bytes_(bytes) {}
-  template <class T>
-  T get() {
+  template <class T> T get() {
     T value;
     std::memcpy(&value, take(sizeof value), sizeof value);
     return value;
@@ -136,7 +132,8 @@ Checkpoint read_checkpoint(const std::string& path) {
   const size_t body = bytes.size() - sizeof(std::uint64_t);
   std::uint64_t stored;
   std::memcpy(&stored, bytes.data() + body, sizeof stored);
-  require(stored == content_hash(std::string_view(bytes.data(), body)), "checkpoint '", path, "' is damaged (its checksum does not match)");
+  require(stored == content_hash(std::string_view(bytes.data(), body)), "checkpoint '", path,
+          "' is damaged (its checksum does not match)");
 
   const std::string_view content(bytes.data(), body);
   Reader r(path, content);
@@ -154,7 +151,8 @@ Checkpoint read_checkpoint(const std::string& path) {
     std::string name = r.text();
     c.texts[name] = r.text();
   }
-  require(r.at() == content.size(), "checkpoint '", path, "' is damaged (", content.size() - r.at(), " bytes left over)");
+  require(r.at() == content.size(), "checkpoint '", path, "' is damaged (", content.size() - r.at(),
+          " bytes left over)");
   return c;
 }
 

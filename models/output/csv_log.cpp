@@ -15,8 +15,8 @@ void check_columns(const std::string& path, const std::vector<std::string>& colu
   require(!columns.empty(), "CSV '", path, "': no columns");
   // Quoting is not supported: names stay plain so that every CSV reader splits them the same way.
   for (const std::string& name : columns)
-    require(!name.empty() && name.find_first_of(",\"\r\n") == std::string::npos, "CSV '", path,
-            "': column name '", name, "' is empty or contains a comma, quote or line break");
+    require(!name.empty() && name.find_first_of(",\"\r\n") == std::string::npos, "CSV '", path, "': column name '",
+            name, "' is empty or contains a comma, quote or line break");
 }
 
 void check_row(const std::string& path, size_t num_columns, const std::vector<double>& values) {

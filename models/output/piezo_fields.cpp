@@ -27,8 +27,7 @@ std::array<double, 3> reference_centroid(Shape shape) {
 // Physical gradient of every component of a field at each cell's centroid:
 // grad[(cell * components + c) * dim + d] = d f_c / d x_d, zero in cells outside the field's space.
 // Fixed-size matrices: a dynamic-size inverse would factorise and allocate in every cell.
-template <int Dim>
-std::vector<double> centroid_gradients(const FESpace& space, const Eigen::VectorXd& coefficients) {
+template <int Dim> std::vector<double> centroid_gradients(const FESpace& space, const Eigen::VectorXd& coefficients) {
   using Jacobian = Eigen::Matrix<double, Dim, Dim, Eigen::RowMajor>;
   using Row = Eigen::Matrix<double, 1, Dim>;
   const Mesh& mesh = space.mesh();
@@ -73,15 +72,14 @@ void require_components(const Model& model, const std::string& name, int compone
 
 // The tensor of the term tensor * field: null without the field, or without an optional constant;
 // otherwise the model's constant, which must exist and have the shape rows x cols.
-const Eigen::MatrixXd* term_tensor(const Model& model, const std::string& field, const char* constant,
-                                   const char* what, int rows, int cols, bool optional = false) {
+const Eigen::MatrixXd* term_tensor(const Model& model, const std::string& field, const char* constant, const char* what,
+                                   int rows, int cols, bool optional = false) {
   if (!model.has_field(field) || (optional && !model.has_constant(constant))) return nullptr;
-  require(model.has_constant(constant), "piezo output: field '", field, "' needs the constant '", constant, "' (",
-          what, "), which the model does not have");
+  require(model.has_constant(constant), "piezo output: field '", field, "' needs the constant '", constant, "' (", what,
+          "), which the model does not have");
   const Eigen::MatrixXd& tensor = model.constant(constant);
-  require(tensor.rows() == rows && tensor.cols() == cols, "piezo output: constant '", constant, "' (", what,
-          ") is ", tensor.rows(), " x ", tensor.cols(), ", a ", model.mesh().dim(), "D model needs ", rows, " x ",
-          cols);
+  require(tensor.rows() == rows && tensor.cols() == cols, "piezo output: constant '", constant, "' (", what, ") is ",
+          tensor.rows(), " x ", tensor.cols(), ", a ", model.mesh().dim(), "D model needs ", rows, " x ", cols);
   return &tensor;
 }
 
@@ -154,8 +152,7 @@ std::vector<double> stress(const Model& model, const PiezoFieldNames& names, Cel
   return stress;
 }
 
-std::vector<double> electric_displacement(const Model& model, const PiezoFieldNames& names,
-                                          CellGradients& gradients) {
+std::vector<double> electric_displacement(const Model& model, const PiezoFieldNames& names, CellGradients& gradients) {
   const int dim = model.mesh().dim();
   const int n = voigt_size(dim);
   std::vector<double> displacement(size_t(model.mesh().num_cells()) * dim, 0.0);

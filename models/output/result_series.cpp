@@ -114,8 +114,8 @@ void ResultSeries::continue_from(const std::vector<std::pair<int, double>>& step
   };
   for (const auto& [step, time] : steps) {
     std::string file = file_name(step);
-    const std::string other = file.ends_with(".pvtu") ? file.substr(0, file.size() - 5) + ".vtu"
-                                                      : file.substr(0, file.size() - 4) + ".pvtu";
+    const std::string other =
+        file.ends_with(".pvtu") ? file.substr(0, file.size() - 5) + ".vtu" : file.substr(0, file.size() - 4) + ".pvtu";
     if (!exists(file) && exists(other)) file = other;
     require(exists(file), "ResultSeries '", pvd_path(), "': cannot continue: the file of step ", step, " (", file,
             ") is missing");

@@ -44,7 +44,7 @@ class ResultSeries {
   std::string basename_;
   VtuFormat format_;
   std::map<int, std::pair<double, std::string>> steps_;  // step -> (time, file name relative to the .pvd)
-  std::vector<char> piece_cells_;                         // distributed: this process's cells
+  std::vector<char> piece_cells_;                        // distributed: this process's cells
 
   std::string file_name(int step) const;  // the step's .vtu, or its .pvtu when written in pieces
   std::string piece_name(int step, int rank) const;

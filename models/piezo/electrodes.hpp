@@ -25,8 +25,8 @@ namespace pc {
 enum class ElectrodeCircuit { Driven, Floating };
 
 struct Electrode {
-  std::string name;    // of the history columns: V_<name>, Q_<name>, I_<name>
-  std::string region;  // a face region of the mesh
+  std::string name;      // of the history columns: V_<name>, Q_<name>, I_<name>
+  std::string region;    // a face region of the mesh
   TimeFunction voltage;  // driven: the prescribed V(t)
   ElectrodeCircuit circuit = ElectrodeCircuit::Driven;
   TimeFunction charge = TimeFunction::constant(0);  // floating: the net charge Q(t) it holds (0: open circuit)
@@ -52,8 +52,8 @@ struct ElectrodeReading {
   double voltage = 0, charge = 0, current = 0;
 };
 
-// Reads the electrodes after each accepted state: V and Q (one given, the other measured), and I = (Q - Q_previous) / (t - t_previous)
-// (0 at the first reading). Its previous readings can be saved and restored so a resumed run continues
+// Reads the electrodes after each accepted state: V and Q (one given, the other measured), and I = (Q - Q_previous) /
+// (t - t_previous) (0 at the first reading). Its previous readings can be saved and restored so a resumed run continues
 // the current exactly.
 class ElectrodeMeter {
  public:

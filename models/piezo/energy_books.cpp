@@ -42,15 +42,22 @@ EnergyBooks::EnergyBooks(PiezoContactModel& built, double initial_kinetic)
   for (int b = 0; b < int(m.bricks().size()); ++b) {
     const Brick* brick = m.bricks()[b].get();
     Kind kind = Kind::Other;
-    if (std::count(built.contact_bricks.begin(), built.contact_bricks.end(), b)) kind = Kind::Contact;
-    else if (dynamic_cast<const InertiaBrick*>(brick)) kind = Kind::Inertia;
-    else if (dynamic_cast<const ElasticityBrick*>(brick)) kind = Kind::Elasticity;
-    else if (dynamic_cast<const PermittivityBrick*>(brick)) kind = Kind::Permittivity;
-    else if (dynamic_cast<const PiezoelectricCouplingBrick*>(brick)) kind = Kind::Coupling;
+    if (std::count(built.contact_bricks.begin(), built.contact_bricks.end(), b))
+      kind = Kind::Contact;
+    else if (dynamic_cast<const InertiaBrick*>(brick))
+      kind = Kind::Inertia;
+    else if (dynamic_cast<const ElasticityBrick*>(brick))
+      kind = Kind::Elasticity;
+    else if (dynamic_cast<const PermittivityBrick*>(brick))
+      kind = Kind::Permittivity;
+    else if (dynamic_cast<const PiezoelectricCouplingBrick*>(brick))
+      kind = Kind::Coupling;
     else if (dynamic_cast<const ViscosityBrick*>(brick) || dynamic_cast<const BoundaryDashpotBrick*>(brick))
       kind = Kind::Dissipative;
-    else if (dynamic_cast<const SourceBrick*>(brick)) kind = Kind::External;
-    else if (dynamic_cast<const DirichletBrick*>(brick) || dynamic_cast<const UniformValueBrick*>(brick)) kind = Kind::None;
+    else if (dynamic_cast<const SourceBrick*>(brick))
+      kind = Kind::External;
+    else if (dynamic_cast<const DirichletBrick*>(brick) || dynamic_cast<const UniformValueBrick*>(brick))
+      kind = Kind::None;
     kinds_.push_back(kind);
     bool tests_phi = false;
     for (const BrickTerm& bt : brick->terms())
@@ -77,7 +84,8 @@ void EnergyBooks::start(const Model& m) {
     assembled = false;
   }
   if (!assembled) {
-    require(u_.cwiseAbs().maxCoeff() == 0 && !electric_, "energy books: the initial state has a displacement or a "
+    require(u_.cwiseAbs().maxCoeff() == 0 && !electric_,
+            "energy books: the initial state has a displacement or a "
             "potential but the model has not been assembled at it (start the books after the initial solve)");
   } else {
     for (size_t b = 0; b < kinds_.size(); ++b) {
@@ -91,7 +99,8 @@ void EnergyBooks::start(const Model& m) {
   }
   if (electric_ && phi_total_.size() == 0) phi_total_ = Eigen::VectorXd::Zero(phi_.size());
   for (size_t b = 0; b < phi_residuals_.size(); ++b)
-    if (electric_ && tests_phi_[b] && phi_residuals_[b].size() == 0) phi_residuals_[b] = Eigen::VectorXd::Zero(phi_.size());
+    if (electric_ && tests_phi_[b] && phi_residuals_[b].size() == 0)
+      phi_residuals_[b] = Eigen::VectorXd::Zero(phi_.size());
   initial_stored_ = totals_.stored();
 }
 
@@ -157,14 +166,23 @@ const EnergyBalance& EnergyBooks::record(const Model& m) {
 }
 
 std::vector<std::string> EnergyBooks::columns() {
-  return {"E_kinetic", "E_elastic", "E_electric", "W_numerical", "W_viscous", "W_contact", "W_coupling", "W_other",
-          "W_external", "W_boundary", "E_balance"};
+  return {"E_kinetic",  "E_elastic", "E_electric", "W_numerical", "W_viscous", "W_contact",
+          "W_coupling", "W_other",   "W_external", "W_boundary",  "E_balance"};
 }
 
 std::vector<double> EnergyBooks::row() const {
   const EnergyBalance& t = totals_;
-  return {t.kinetic, t.elastic, t.electric, t.numerical_dissipation, t.viscous_dissipation, t.contact_dissipation,
-          t.coupling, t.other, t.external_work, t.boundary_work, t.balance};
+  return {t.kinetic,
+          t.elastic,
+          t.electric,
+          t.numerical_dissipation,
+          t.viscous_dissipation,
+          t.contact_dissipation,
+          t.coupling,
+          t.other,
+          t.external_work,
+          t.boundary_work,
+          t.balance};
 }
 
 std::map<std::string, Eigen::VectorXd> EnergyBooks::state() const {
@@ -197,8 +215,17 @@ void EnergyBooks::restore(const std::map<std::string, Eigen::VectorXd>& s) {
   require(scalars.size() == Eigen::Index(columns().size() + 3), "energy books: the saved state has ", scalars.size(),
           " numbers, expected ", columns().size() + 3);
   EnergyBalance& t = totals_;
-  double* fields[] = {&t.kinetic, &t.elastic, &t.electric, &t.numerical_dissipation, &t.viscous_dissipation,
-                      &t.contact_dissipation, &t.coupling, &t.other, &t.external_work, &t.boundary_work, &t.balance};
+  double* fields[] = {&t.kinetic,
+                      &t.elastic,
+                      &t.electric,
+                      &t.numerical_dissipation,
+                      &t.viscous_dissipation,
+                      &t.contact_dissipation,
+                      &t.coupling,
+                      &t.other,
+                      &t.external_work,
+                      &t.boundary_work,
+                      &t.balance};
   for (size_t i = 0; i < std::size(fields); ++i) *fields[i] = scalars[Eigen::Index(i)];
   time_ = scalars[Eigen::Index(std::size(fields))];
   initial_stored_ = scalars[Eigen::Index(std::size(fields) + 1)];

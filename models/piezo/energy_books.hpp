@@ -29,7 +29,7 @@ struct EnergyBalance {
   // Accumulated since t = 0.
   double numerical_dissipation = 0, viscous_dissipation = 0, contact_dissipation = 0, coupling = 0,
          other = 0,  // the conductive foundation and any brick of another kind (a user's)
-         external_work = 0, boundary_work = 0;
+      external_work = 0, boundary_work = 0;
   // stored - stored(0) + the dissipations + coupling + other - external_work - boundary_work: what is left
   // is the work of the residual on the free dofs, Newton's tolerance times the scale (not a modelling term).
   double balance = 0;

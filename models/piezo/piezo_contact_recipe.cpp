@@ -17,7 +17,8 @@ namespace {
 template <class Factory>
 const typename Registry<Factory>::Entry& choose(Model& model, const Registry<Factory>& registry, const Choice& choice) {
   const auto& entry = registry.at(choice.name, registry.key());
-  model.set_constants(checked_values(entry.parameters, choice.parameters, message(registry.key(), " '", choice.name, "'")));
+  model.set_constants(
+      checked_values(entry.parameters, choice.parameters, message(registry.key(), " '", choice.name, "'")));
   return entry;
 }
 
@@ -75,7 +76,8 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
       m.add_brick(std::make_shared<SurfaceChargeBrick>(q.load, q.time, q.region));
   }
 
-  require(electric || spec.electrodes.empty(), "electrodes: a purely mechanical body (no piezo_E, permittivity_beta) "
+  require(electric || spec.electrodes.empty(),
+          "electrodes: a purely mechanical body (no piezo_E, permittivity_beta) "
           "has no potential to drive");
   if (!spec.contact.empty()) {
     require(spec.mesh->has_region(spec.contact) && spec.mesh->region_kind(spec.contact) == RegionKind::Faces,
@@ -99,7 +101,8 @@ PiezoContactModel build_piezo_contact_model(const PiezoContactSpec& spec) {
       return contact_status(*normal, model.space("v"), nodes, model.values(argument), model.values("v"), threshold,
                             model.time());
     };
-    m.add_diagnostic("contact_nodes_in_compression", [=](const Model& model) { return double(status(model).in_contact); });
+    m.add_diagnostic("contact_nodes_in_compression",
+                     [=](const Model& model) { return double(status(model).in_contact); });
     m.add_diagnostic("contact_nodes_in_slip", [=](const Model& model) { return double(status(model).sliding); });
   } else {
     require(!spec.foundation_motion || !spec.foundation_motion->moves(),

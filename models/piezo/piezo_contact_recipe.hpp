@@ -18,9 +18,9 @@
 
 #include "assembly/parameters.hpp"
 #include "bricks/contact_status.hpp"
+#include "bricks/foundation_motion.hpp"
 #include "bricks/normal_pressure.hpp"
 #include "bricks/source_bricks.hpp"
-#include "bricks/foundation_motion.hpp"
 #include "models/model.hpp"
 #include "models/piezo/electrodes.hpp"
 #include "models/time_scheme.hpp"
@@ -48,10 +48,10 @@ struct PiezoContactSpec {
   std::vector<std::string> grounded;  // phi = 0
   std::vector<Electrode> electrodes;  // phi = V(t), each with its charge and current (electrodes.hpp)
   std::vector<SurfaceLoad> tractions;
-  Load body_force;                    // optional
-  Load volume_charge;                 // optional
+  Load body_force;     // optional
+  Load volume_charge;  // optional
   std::vector<SurfaceLoad> surface_charges;
-  std::string contact;                // face region; empty: no contact
+  std::string contact;  // face region; empty: no contact
   // The foundation's velocity V_f(t) (null: at rest): the contact laws read the body's motion relative to it.
   std::shared_ptr<const FoundationMotion> foundation_motion;
   // Registered law names with their parameters (bricks/law_registry.hpp); parameters left out take
@@ -59,7 +59,7 @@ struct PiezoContactSpec {
   Choice normal{"linear_damped", {}};
   Choice friction{"none", {}};
   Choice foundation{"insulated", {}};
-  double slip_threshold = 0;          // |v_tau| above which a contact node counts as sliding
+  double slip_threshold = 0;            // |v_tau| above which a contact node counts as sliding
   Choice scheme{"backward_euler", {}};  // a registered time scheme: backward_euler | bdf2 | theta
   // Registered bricks (bricks/brick_registry.hpp) to add over their regions, their parameters written into
   // the model's constants.

@@ -11,7 +11,8 @@ SpaceErrorEstimate PiezoSpaceErrorEstimator::operator()(const Model& model) {
     for (const auto& candidate : estimators_)
       if (!estimator && candidate->serves(space)) estimator = candidate.get();
     if (!estimator) estimator = estimators_.emplace_back(std::make_unique<SpaceErrorEstimator>(space)).get();
-    estimate.fields.push_back(estimator->estimate(field, space, model.values(field), measure, model.constant(constant)));
+    estimate.fields.push_back(
+        estimator->estimate(field, space, model.values(field), measure, model.constant(constant)));
   };
   add(names_.displacement, "B", GradientMeasure::Strain);
   add(names_.velocity, "A", GradientMeasure::Strain);

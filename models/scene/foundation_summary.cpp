@@ -16,8 +16,9 @@ namespace pc {
 std::vector<std::pair<const char*, double>> result_numbers(const FoundationRunResult& r) {
   std::vector<std::pair<const char*, double>> numbers = {{"max_abs_ux", r.max_abs_ux}, {"max_abs_uy", r.max_abs_uy}};
   if (r.dim == 3) numbers.push_back({"max_abs_uz", r.max_abs_uz});
-  numbers.insert(numbers.end(), {{"phi_min", r.phi_min}, {"phi_max", r.phi_max}, {"ux_corner", r.ux_corner},
-                                 {"uy_corner", r.uy_corner}});
+  numbers.insert(
+      numbers.end(),
+      {{"phi_min", r.phi_min}, {"phi_max", r.phi_max}, {"ux_corner", r.ux_corner}, {"uy_corner", r.uy_corner}});
   if (r.dim == 3) numbers.push_back({"uz_corner", r.uz_corner});
   numbers.insert(numbers.end(), {{"phi_center", r.phi_center}, {"max_abs_vtau_contact", r.max_abs_vtau_contact}});
   return numbers;
@@ -106,8 +107,10 @@ void set_costs(Json& s, const FoundationRunResult& r) {
   s.set("processes", Json(double(processes::count())));
   // The BLAS kernels that ran: another CPU's kernels give results equal to round-off, not to the bit.
   const BlasInfo& blas = blas_info();
-  s.set("blas", Json::object({{"vendor", Json(blas.vendor)}, {"core", Json(blas.core)},
-                              {"config", Json(blas.config)}, {"library", Json(blas.library)}}));
+  s.set("blas", Json::object({{"vendor", Json(blas.vendor)},
+                              {"core", Json(blas.core)},
+                              {"config", Json(blas.config)},
+                              {"library", Json(blas.library)}}));
   // What the solver of the full factorisations predicted of them (MUMPS's INFOG), when they were made.
   if (r.full_factors.entries > 0) {
     Json f = Json::object();

@@ -453,8 +453,7 @@ Eigen::MatrixXd Json::as_matrix() const {
     const std::vector<double> row = rows[r].as_vector();
     require(row.size() == cols, "scene: ", where(path_), " must be a matrix, but row ", r, " has ", row.size(),
             " entries and row 0 has ", cols);
-    for (std::size_t c = 0; c < cols; ++c)
-      matrix(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = row[c];
+    for (std::size_t c = 0; c < cols; ++c) matrix(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = row[c];
   }
   return matrix;
 }

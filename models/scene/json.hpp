@@ -32,8 +32,7 @@ class Json {
   // Throws when the value is NaN or infinite.
   Json(double value);
   template <std::integral Integer>
-    requires(!std::same_as<Integer, bool>)
-  Json(Integer value) : Json(static_cast<double>(value)) {}
+  requires(!std::same_as<Integer, bool>) Json(Integer value) : Json(static_cast<double>(value)) {}
   // Throws when the text is not valid UTF-8, which a JSON document could not hold.
   Json(std::string value);
   // Without it a string literal would convert to bool.

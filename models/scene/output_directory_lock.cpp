@@ -26,8 +26,8 @@ OutputDirectoryLock::OutputDirectoryLock(const std::string& directory) {
   }
   const std::string lock = (fs::path(directory) / ".piezocontact.lock").string();
   fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  require(fd_ >= 0, "the output directory (--out) '", directory, "' is not writable: cannot create '", lock, "': ",
-          std::strerror(errno));
+  require(fd_ >= 0, "the output directory (--out) '", directory, "' is not writable: cannot create '", lock,
+          "': ", std::strerror(errno));
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     const int reason = errno;
     std::string owner;
@@ -43,7 +43,8 @@ OutputDirectoryLock::OutputDirectoryLock(const std::string& directory) {
   const bool written = ::ftruncate(fd_, 0) == 0 && ::write(fd_, pid.data(), pid.size()) == ssize_t(pid.size());
   // The lock file alone does not show that results can be written (it may be left from an earlier run):
   // a file is created and removed in the directory, before any step is computed.
-  const std::string probe_file = (fs::path(directory) / (".piezocontact.write_test." + std::to_string(::getpid()))).string();
+  const std::string probe_file =
+      (fs::path(directory) / (".piezocontact.write_test." + std::to_string(::getpid()))).string();
   const int probe_fd = ::open(probe_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   const int probe_errno = errno;
   if (probe_fd >= 0) {
@@ -53,8 +54,8 @@ OutputDirectoryLock::OutputDirectoryLock(const std::string& directory) {
   if (!written || probe_fd < 0) {
     ::close(fd_);
     fd_ = -1;
-    fail("the output directory (--out) '", directory, "' is not writable: ",
-         probe_fd < 0 ? std::strerror(probe_errno) : "cannot write the lock file");
+    fail("the output directory (--out) '", directory,
+         "' is not writable: ", probe_fd < 0 ? std::strerror(probe_errno) : "cannot write the lock file");
   }
 }
 

@@ -35,7 +35,8 @@ void load_plugin(const std::string& path) {
   const auto registrations = reinterpret_cast<RegisterFunction>(dlsym(handle, "piezocontact_plugin_register"));
   if (!version || !registrations) {
     dlclose(handle);
-    fail("plugin '", path, "': not a piezocontact plugin (it has no piezocontact_plugin_version and "
+    fail("plugin '", path,
+         "': not a piezocontact plugin (it has no piezocontact_plugin_version and "
          "piezocontact_plugin_register; build it with piezocontact_add_plugin())");
   }
   const std::string built_against = version();

@@ -23,8 +23,8 @@ ParameterValues read_parameters(const Json& object, const ChosenEntry& entry) {
   return values;
 }
 
-void require_read_keys(const Json& object, const std::vector<std::string>& fixed, const std::vector<ChosenEntry>& chosen,
-                       const std::vector<RegisteredParameters>& others) {
+void require_read_keys(const Json& object, const std::vector<std::string>& fixed,
+                       const std::vector<ChosenEntry>& chosen, const std::vector<RegisteredParameters>& others) {
   std::vector<std::string> allowed = fixed;
   for (const ChosenEntry& entry : chosen)
     for (const ParameterDeclaration& d : *entry.parameters) allowed.push_back(d.name);

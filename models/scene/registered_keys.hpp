@@ -29,8 +29,8 @@ struct RegisteredParameters {
   std::string label;  // "law_tangential"
   std::vector<std::pair<std::string, const std::vector<ParameterDeclaration>*>> entries;
 };
-void require_read_keys(const Json& object, const std::vector<std::string>& fixed, const std::vector<ChosenEntry>& chosen,
-                       const std::vector<RegisteredParameters>& others);
+void require_read_keys(const Json& object, const std::vector<std::string>& fixed,
+                       const std::vector<ChosenEntry>& chosen, const std::vector<RegisteredParameters>& others);
 
 template <class Factory>
 RegisteredParameters registered_parameters(const std::string& label, const Registry<Factory>& registry) {
@@ -43,7 +43,8 @@ RegisteredParameters registered_parameters(const std::string& label, const Regis
 // is not empty); an unknown name is refused with the path and the registered names.
 template <class Factory>
 const typename Registry<Factory>::Entry& chosen_entry(const Json& object, const std::string& key,
-                                                      const Registry<Factory>& registry, const std::string& fallback = "") {
+                                                      const Registry<Factory>& registry,
+                                                      const std::string& fallback = "") {
   const auto named = object.find(key);
   if (!named && !fallback.empty()) return registry.at(fallback, "scene: '" + object.path() + "." + key + "'");
   const Json& name = object.at(key);

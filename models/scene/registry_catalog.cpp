@@ -11,8 +11,7 @@
 namespace pc {
 namespace {
 
-template <class Factory>
-CatalogSection section(const Registry<Factory>& registry, std::string where) {
+template <class Factory> CatalogSection section(const Registry<Factory>& registry, std::string where) {
   CatalogSection s{registry.kind(), registry.key(), std::move(where), {}};
   for (const auto& e : registry.entries()) s.entries.push_back({e.name, e.doc, e.parameters});
   return s;
@@ -35,11 +34,10 @@ std::string table_cell(const std::string& text) {
 }  // namespace
 
 std::vector<CatalogSection> registry_catalog() {
-  return {section(piezo_material_registry(), "material"),
-          section(normal_law_registry(), "contact"), section(friction_law_registry(), "contact"),
-          section(foundation_law_registry(), "foundation.<name>"), section(brick_registry(), "bricks[]"),
-          section(time_scheme_registry(), "time"),
-          section(linear_solver_registry(), "solver"), section(condensation_registry(), "solver")};
+  return {section(piezo_material_registry(), "material"), section(normal_law_registry(), "contact"),
+          section(friction_law_registry(), "contact"),    section(foundation_law_registry(), "foundation.<name>"),
+          section(brick_registry(), "bricks[]"),          section(time_scheme_registry(), "time"),
+          section(linear_solver_registry(), "solver"),    section(condensation_registry(), "solver")};
 }
 
 std::string catalog_list(const std::vector<CatalogSection>& catalog) {
@@ -74,8 +72,8 @@ std::string catalog_markdown(const std::vector<CatalogSection>& catalog) {
       std::string parameters;
       for (const ParameterDeclaration& p : e.parameters)
         parameters += (parameters.empty() ? "" : "; ") + describe_parameter(p);
-      text += message("| `", e.name, "` | ", table_cell(e.doc), " | ", table_cell(parameters.empty() ? "none" : parameters),
-                      " |\n");
+      text += message("| `", e.name, "` | ", table_cell(e.doc), " | ",
+                      table_cell(parameters.empty() ? "none" : parameters), " |\n");
     }
   }
   return text;

@@ -15,9 +15,9 @@ struct CatalogEntry {
 };
 
 struct CatalogSection {
-  std::string kind;  // "normal law"
-  std::string key;   // the scene key that names an entry: "contact.law_normal"
-  std::string where; // where the entry's parameters go in a scene: "contact"
+  std::string kind;   // "normal law"
+  std::string key;    // the scene key that names an entry: "contact.law_normal"
+  std::string where;  // where the entry's parameters go in a scene: "contact"
   std::vector<CatalogEntry> entries;
 };
 

@@ -22,8 +22,8 @@ void save_totals(const FoundationRunResult& r, double wall_seconds, Checkpoint& 
 void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_seconds) {
   r.assembly_seconds = c.number("run:assembly_seconds");
   // A checkpoint of an earlier version has no Jacobian and output times: its part counts as residual and other.
-  for (auto [name, value] : {std::pair{"run:jacobian_seconds", &r.jacobian_seconds},
-                             std::pair{"run:output_seconds", &r.output_seconds}})
+  for (auto [name, value] :
+       {std::pair{"run:jacobian_seconds", &r.jacobian_seconds}, std::pair{"run:output_seconds", &r.output_seconds}})
     *value = c.numbers.count(name) ? c.numbers.at(name) : 0.0;
   r.factorize_seconds = c.number("run:factorize_seconds");
   r.solve_seconds = c.number("run:solve_seconds");
@@ -33,7 +33,7 @@ void restore_totals(const Checkpoint& c, FoundationRunResult& r, double& wall_se
   r.factorizations = int(c.number("run:factorizations"));
   wall_seconds = c.number("run:wall_seconds");
   for (const auto& [prefix, values] : {std::pair{std::string("run:space_error_scale:"), &r.space_error_scale},
-                                      std::pair{std::string("run:space_error_largest:"), &r.space_error_largest}})
+                                       std::pair{std::string("run:space_error_largest:"), &r.space_error_largest}})
     for (const auto& [key, value] : c.numbers)
       if (key.starts_with(prefix)) (*values)[key.substr(prefix.size())] = value;
   if (c.numbers.count("run:time_error_peak")) r.time_error_peak = c.number("run:time_error_peak");

@@ -84,8 +84,8 @@ std::string scene_fingerprint(const Scene& scene) {
   // Budgets and the rhythm of progress lines and checkpoints do not change a result: a stopped run may be
   // resumed with a longer wall-time limit.
   Json json = scene.json;
-  const std::map<std::string, std::vector<std::string>> ignored = {
-      {"time", {"max_wall_seconds", "max_attempts"}}, {"output", {"progress_every", "checkpoint_every"}}};
+  const std::map<std::string, std::vector<std::string>> ignored = {{"time", {"max_wall_seconds", "max_attempts"}},
+                                                                   {"output", {"progress_every", "checkpoint_every"}}};
   for (const auto& [section, keys] : ignored) {
     const auto found = json.is_object() ? json.find(section) : std::nullopt;
     if (!found || !found->is_object()) continue;
@@ -210,10 +210,11 @@ void RunManifest::save() {
       {"format", Json(1)},
       {"program", Json(std::string("piezocontact ") + library_version())},
       {"compiler", Json(std::string(__VERSION__))},
-      {"scene", Json::object({{"name", Json(scene_->name)},
-                              {"file", Json(scene_->file.empty() ? std::string() : fs::absolute(scene_->file).string())},
-                              {"overrides", overrides},
-                              {"fingerprint", Json(fingerprint_)}})},
+      {"scene",
+       Json::object({{"name", Json(scene_->name)},
+                     {"file", Json(scene_->file.empty() ? std::string() : fs::absolute(scene_->file).string())},
+                     {"overrides", overrides},
+                     {"fingerprint", Json(fingerprint_)}})},
       {"state", Json(state_)},
       {"started", Json(started_)},
       {"updated", Json(now_utc())},

@@ -14,8 +14,7 @@ namespace pc {
 class RunProgress {
  public:
   // A run of `steps` steps of the foundation, started at `start` (both must outlive the progress).
-  RunProgress(const Scene& scene, const std::string& foundation, std::chrono::steady_clock::time_point start,
-              int steps)
+  RunProgress(const Scene& scene, const std::string& foundation, std::chrono::steady_clock::time_point start, int steps)
       : scene_(scene), foundation_(foundation), start_(start), steps_(steps) {}
   // From the start of this process's part of the run on (a resumed run's starts at its checkpoint's time).
   void begin(double first_time);

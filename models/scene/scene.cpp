@@ -10,10 +10,17 @@
 namespace pc {
 
 const std::vector<SceneVtuField>& scene_vtu_fields() {
-  static const std::vector<SceneVtuField> fields = {
-      {"v", false}, {"u", false}, {"phi", true}, {"contact_pressure", false}, {"contact_state", false}, {"strain", false},
-      {"stress", false}, {"von_mises", false}, {"electric_field", true}, {"electric_displacement", true},
-      {"space_error", false}};
+  static const std::vector<SceneVtuField> fields = {{"v", false},
+                                                    {"u", false},
+                                                    {"phi", true},
+                                                    {"contact_pressure", false},
+                                                    {"contact_state", false},
+                                                    {"strain", false},
+                                                    {"stress", false},
+                                                    {"von_mises", false},
+                                                    {"electric_field", true},
+                                                    {"electric_displacement", true},
+                                                    {"space_error", false}};
   return fields;
 }
 
@@ -30,22 +37,9 @@ Scene load_scene(const Json& json, const std::string& directory) {
   // The sections in the order they are read: a later one uses what an earlier one read (the plugins' laws,
   // the mesh's dimension and regions, whether the body is piezoelectric, the contact region).
   static constexpr SceneSection sections[] = {
-      read_name,
-      check_top_level_keys,
-      load_plugins,
-      read_mesh,
-      read_material,
-      read_material_tensors,
-      read_regions,
-      read_loads,
-      read_contact,
-      read_electrodes,
-      read_foundations,
-      read_bricks,
-      read_time,
-      read_solver,
-      read_output,
-      check_output_points};
+      read_name,    check_top_level_keys, load_plugins, read_mesh,          read_material,    read_material_tensors,
+      read_regions, read_loads,           read_contact, read_electrodes,    read_foundations, read_bricks,
+      read_time,    read_solver,          read_output,  check_output_points};
   for (const SceneSection section : sections) section(reading);
   reading.problems.throw_if_any(scene.name);
   return scene;

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "assembly/vtu_format.hpp"
+#include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/scene/json.hpp"
 #include "models/scene/target_error_choice.hpp"
 #include "models/solvers/newton.hpp"
-#include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/stepper.hpp"
 
 namespace pc {
@@ -54,39 +54,39 @@ struct SceneOutput {
   int checkpoint_every = 10;  // a checkpoint (for --resume) every N steps and at a stop; 0: only at a stop
   std::array<double, 3> corner{}, center{};  // probes of history.csv and summary.json
   SceneGrid grid;
-  double slip_threshold = 0;                 // m/s: a contact node with |v_tau| above it slides
+  double slip_threshold = 0;  // m/s: a contact node with |v_tau| above it slides
   // output.contact_history: contact_state.csv, each contact node's state at every step (contact_nodes.csv
   // says where the nodes are)
   bool contact_history = false;
   // output.energy_books: the energy books' columns in history.csv (backward Euler; each kept brick's
   // residual costs a copy per assembly)
   bool energy_books = true;
-  std::vector<double> phi_f_sweep;           // foundation voltages for Figure 5 (conductive runs)
-  int sweep_steps = 0;                       // time steps of each sweep run (0: the scene's)
+  std::vector<double> phi_f_sweep;  // foundation voltages for Figure 5 (conductive runs)
+  int sweep_steps = 0;              // time steps of each sweep run (0: the scene's)
 };
 
 struct Scene {
-  Json json;  // the scene as read, after --set overrides
+  Json json;                           // the scene as read, after --set overrides
   std::string file;                    // the scene file (load_scene_file), and ...
   std::vector<std::string> overrides;  // ... the --set overrides applied to it
   std::string directory;               // what relative paths in the scene (gmsh file, plugins) resolve against
   std::string name;
-  std::string mesh_description;  // e.g. "60 x 20 triangles"
-  int nx = 0, ny = 0, nz = 0;    // generated meshes only (nz: box)
-  std::string mesh_generator;    // mesh.generator ("rectangle", "box"); empty for a gmsh mesh
+  std::string mesh_description;      // e.g. "60 x 20 triangles"
+  int nx = 0, ny = 0, nz = 0;        // generated meshes only (nz: box)
+  std::string mesh_generator;        // mesh.generator ("rectangle", "box"); empty for a gmsh mesh
   std::vector<double> mesh_spacing;  // generated meshes: the cell size along each axis
-  std::string mesh_file;         // mesh.gmsh as the scene gives it; empty for a generated mesh
-  double mesh_size_factor = 1;   // mesh.size_factor (gmsh)
-  PiezoContactSpec spec;         // everything but the foundation; spec.scheme from time.scheme and its parameters
-  std::vector<double> u0, v0;    // constant initial displacement and velocity
+  std::string mesh_file;             // mesh.gmsh as the scene gives it; empty for a generated mesh
+  double mesh_size_factor = 1;       // mesh.size_factor (gmsh)
+  PiezoContactSpec spec;             // everything but the foundation; spec.scheme from time.scheme and its parameters
+  std::vector<double> u0, v0;        // constant initial displacement and velocity
   std::vector<SceneFoundation> foundations;
   double end_time = 0;
   int steps = 0;
   Prediction prediction = Prediction::Previous;
   NewtonOptions newton;
   double cutback_factor = 0.5;
-  int max_attempts = 0;           // time.max_attempts: step attempts, accepted or cut back (0: no limit)
-  double max_wall_seconds = 0;    // time.max_wall_seconds (0: no limit)
+  int max_attempts = 0;         // time.max_attempts: step attempts, accepted or cut back (0: no limit)
+  double max_wall_seconds = 0;  // time.max_wall_seconds (0: no limit)
   // time.adaptive: a tolerance, or {"tolerance", "max_step", "factorization_cost"}; time.steps then sets
   // the first step (StepperOptions::adaptive).
   std::optional<AdaptiveSteps> adaptive;
@@ -97,7 +97,7 @@ struct Scene {
   // scene_for_target_error has chosen, what it chose.
   std::optional<double> target_error;
   std::optional<TargetErrorChoice> target_choice;
-  int threads = 0;                // solver.threads: of the element loops and products (0: assembly/threads.hpp's default)
+  int threads = 0;  // solver.threads: of the element loops and products (0: assembly/threads.hpp's default)
   SceneOutput output;
 };
 

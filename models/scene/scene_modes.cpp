@@ -14,7 +14,8 @@ namespace pc {
 
 ModalResult write_scene_modes(const Scene& scene, const std::string& directory, const ModalOptions& options,
                               bool open_circuit) {
-  require(scene.spec.rho > 0, "modes: the scene's body has no mass (material.rho = 0): a quasi-static model has no "
+  require(scene.spec.rho > 0,
+          "modes: the scene's body has no mass (material.rho = 0): a quasi-static model has no "
           "vibration modes");
   Scene circuit = scene;
   if (open_circuit) {

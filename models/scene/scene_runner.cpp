@@ -23,18 +23,18 @@
 #include "models/output/contact_output_fields.hpp"
 #include "models/output/csv_log.hpp"
 #include "models/output/piezo_fields.hpp"
-#include "models/scene/foundation_summary.hpp"
-#include "models/scene/interrupts.hpp"
-#include "models/scene/run_checkpoint.hpp"
-#include "models/scene/run_manifest.hpp"
-#include "models/scene/run_progress.hpp"
-#include "models/scene/target_error.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/contact_resultant.hpp"
 #include "models/piezo/electrodes.hpp"
 #include "models/piezo/energy_books.hpp"
 #include "models/piezo/initial_potential.hpp"
 #include "models/piezo/piezo_space_error.hpp"
+#include "models/scene/foundation_summary.hpp"
+#include "models/scene/interrupts.hpp"
+#include "models/scene/run_checkpoint.hpp"
+#include "models/scene/run_manifest.hpp"
+#include "models/scene/run_progress.hpp"
+#include "models/scene/target_error.hpp"
 
 namespace pc {
 namespace {
@@ -93,8 +93,8 @@ void write_contact_table(const Scene& scene, const PiezoContactModel& built, con
   std::vector<std::vector<double>> rows;
   for (size_t i = 0; i < nodes.points.size(); ++i) {
     const int dof = nodes.scalar_dofs[i];
-    const size_t k = std::lower_bound(contact.scalar_dofs.begin(), contact.scalar_dofs.end(), dof) -
-                     contact.scalar_dofs.begin();
+    const size_t k =
+        std::lower_bound(contact.scalar_dofs.begin(), contact.scalar_dofs.end(), dof) - contact.scalar_dofs.begin();
     std::vector<double> row = {nodes.points[i][0]};
     if (dim == 3) row.push_back(nodes.points[i][2]);
     for (const char* field : {"u", "v"})
@@ -176,10 +176,17 @@ void write_final_tables(const Scene& scene, const PiezoContactModel& built, cons
 // The stepper's counts without the time error estimate's history (vectors of the mesh's size), which a
 // copy per step would not afford.
 StepperState counts_of(const StepperState& s) {
-  return {.time = s.time, .step_size = s.step_size, .steps = s.steps, .successes = s.successes,
-          .attempts = s.attempts, .cutbacks = s.cutbacks, .newton_iterations_total = s.newton_iterations_total,
-          .newton_iterations_max_per_step = s.newton_iterations_max_per_step, .rejections = s.rejections,
-          .last_error = s.last_error, .time_error = {}};
+  return {.time = s.time,
+          .step_size = s.step_size,
+          .steps = s.steps,
+          .successes = s.successes,
+          .attempts = s.attempts,
+          .cutbacks = s.cutbacks,
+          .newton_iterations_total = s.newton_iterations_total,
+          .newton_iterations_max_per_step = s.newton_iterations_max_per_step,
+          .rejections = s.rejections,
+          .last_error = s.last_error,
+          .time_error = {}};
 }
 
 // history.csv, a row per step: the corner's u_y (and u_z in 3D), the centre's potential, Newton's iterations.
@@ -216,15 +223,18 @@ PiezoContactModel build_foundation_model(const Scene& scene, const SceneFoundati
   try {
     return build_piezo_contact_model(spec);
   } catch (const std::bad_alloc& e) {
-    fail("out of memory while building the model of the ", foundation.name, " foundation (",
-         spec.mesh->num_cells(), " cells, P", spec.order, "): ", e.what(), "; coarsen the mesh, or free memory");
+    fail("out of memory while building the model of the ", foundation.name, " foundation (", spec.mesh->num_cells(),
+         " cells, P", spec.order, "): ", e.what(), "; coarsen the mesh, or free memory");
   }
 }
 
 }  // namespace
 
 FoundationRun::FoundationRun(const Scene& scene, const SceneFoundation& foundation)
-    : scene_(scene), foundation_(foundation), built_(build_foundation_model(scene, foundation)), newton_(scene.newton) {}
+    : scene_(scene),
+      foundation_(foundation),
+      built_(build_foundation_model(scene, foundation)),
+      newton_(scene.newton) {}
 
 FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& foundation, const std::string& dir,
                                    bool progress, int steps_override) {
@@ -323,12 +333,17 @@ class RunHistory {
 };
 
 RunHistory::RunHistory(const Scene& scene, PiezoContactModel& built, const PointLocator& locator)
-    : scene_(scene), built_(built), locator_(locator), dim_(built.model->mesh().dim()),
-      electrodes_(scene.spec.electrodes), header_(history_columns(dim_)),
-      error_fields_(scene.estimate_time_error ? TimeErrorEstimator::default_fields(*built.model, *built.scheme,
-                                                                                   scene.time_error_propagation)
-                                              : std::vector<std::string>{}),
-      contact_(built.normal != nullptr), contact_history_(contact_ && scene.output.contact_history) {
+    : scene_(scene),
+      built_(built),
+      locator_(locator),
+      dim_(built.model->mesh().dim()),
+      electrodes_(scene.spec.electrodes),
+      header_(history_columns(dim_)),
+      error_fields_(scene.estimate_time_error
+                        ? TimeErrorEstimator::default_fields(*built.model, *built.scheme, scene.time_error_propagation)
+                        : std::vector<std::string>{}),
+      contact_(built.normal != nullptr),
+      contact_history_(contact_ && scene.output.contact_history) {
   header_.insert(header_.end(), {"dt", "err_time_step"});
   for (const std::string& f : error_fields_) header_.push_back("err_time_" + f);
   for (const std::string& column : electrodes_.columns()) header_.push_back(column);
@@ -372,10 +387,10 @@ void RunHistory::open(const std::string& dir) {
   if (contact_history_) {
     contact_log_ = std::make_unique<CsvLog>(dir + "/contact_state.csv", contact_header_);
     std::vector<std::vector<double>> where;
-    for (const auto& p : contact_nodes_.points) where.push_back(dim_ == 3 ? std::vector<double>{p[0], p[1], p[2]}
-                                                                          : std::vector<double>{p[0], p[1]});
-    write_csv(dir + "/contact_nodes.csv", dim_ == 3 ? std::vector<std::string>{"x", "y", "z"}
-                                                    : std::vector<std::string>{"x", "y"}, where);
+    for (const auto& p : contact_nodes_.points)
+      where.push_back(dim_ == 3 ? std::vector<double>{p[0], p[1], p[2]} : std::vector<double>{p[0], p[1]});
+    write_csv(dir + "/contact_nodes.csv",
+              dim_ == 3 ? std::vector<std::string>{"x", "y", "z"} : std::vector<std::string>{"x", "y"}, where);
   }
 }
 
@@ -461,8 +476,7 @@ class FoundationPass {
   void add_phases(const NewtonReport& newton);
   void note_linear_strategy();
   void note_space_error(const SpaceErrorEstimate& estimate);
-  template <class Write>
-  void timed_output(Write&& write);
+  template <class Write> void timed_output(Write&& write);
   double wall_seconds() const;
 
   const std::chrono::steady_clock::time_point start_;
@@ -495,12 +509,23 @@ class FoundationPass {
 FoundationPass::FoundationPass(std::chrono::steady_clock::time_point start, const Scene& scene,
                                const SceneFoundation& foundation, PiezoContactModel& built, NewtonSolver& newton,
                                const FoundationRunOptions& options)
-    : start_(start), scene_(scene), foundation_(foundation), built_(built), m_(*built.model), newton_(newton),
-      options_(options), dir_(options.directory), writer_(processes::is_writer()),
-      progress_(options.progress && writer_), dim_(m_.mesh().dim()),
+    : start_(start),
+      scene_(scene),
+      foundation_(foundation),
+      built_(built),
+      m_(*built.model),
+      newton_(newton),
+      options_(options),
+      dir_(options.directory),
+      writer_(processes::is_writer()),
+      progress_(options.progress && writer_),
+      dim_(m_.mesh().dim()),
       steps_(options.steps_override > 0 ? options.steps_override : scene.steps),
-      checkpoint_path_(dir_ + "/checkpoint.bin"), stepper_(stepper_options(scene, dir_, steps_)), locator_(m_.mesh()),
-      history_(scene, built, locator_), progress_lines_(scene, foundation.name, start, steps_) {
+      checkpoint_path_(dir_ + "/checkpoint.bin"),
+      stepper_(stepper_options(scene, dir_, steps_)),
+      locator_(m_.mesh()),
+      history_(scene, built, locator_),
+      progress_lines_(scene, foundation.name, start, steps_) {
   result_.foundation = foundation.name;
   result_.dim = dim_;
   for (const std::string& u : m_.unknowns()) result_.ndof += m_.space(u).num_dofs();
@@ -524,8 +549,8 @@ void FoundationPass::open_output() {
   if (writer_) {
     std::error_code error;
     std::filesystem::create_directories(dir_, error);
-    require(!error && std::filesystem::is_directory(dir_), "cannot create the output directory '", dir_, "' (--out): ",
-            error ? error.message() : "a file of that name is in the way");
+    require(!error && std::filesystem::is_directory(dir_), "cannot create the output directory '", dir_,
+            "' (--out): ", error ? error.message() : "a file of that name is in the way");
   }
   processes::any(false);  // the folder exists before the other processes write their pieces into it
   // Distributed, every process writes the piece of its cells of each VTU step, the writer the .pvtu.
@@ -769,8 +794,7 @@ void FoundationPass::note_space_error(const SpaceErrorEstimate& estimate) {
 }
 
 // Writing results, timed as the run's output phase.
-template <class Write>
-void FoundationPass::timed_output(Write&& write) {
+template <class Write> void FoundationPass::timed_output(Write&& write) {
   const auto t = std::chrono::steady_clock::now();
   write();
   result_.output_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -793,14 +817,16 @@ namespace {
 
 void report_folder_cleaning(const RunManifest& manifest, bool progress) {
   if (progress && !manifest.removed().empty())
-    std::printf("removed %zu files of an earlier run from '%s'\n", manifest.removed().size(), manifest.directory().c_str());
+    std::printf("removed %zu files of an earlier run from '%s'\n", manifest.removed().size(),
+                manifest.directory().c_str());
   // Files that are not the run's are reported whatever --quiet says: they must not pass for results.
   if (const auto& foreign = manifest.not_of_this_run(); !foreign.empty()) {
     std::fflush(stdout);
-    std::fprintf(stderr,
-                 "warning: '%s' holds %zu files that are not of this run (e.g. '%s'); they are left alone and listed in "
-                 "manifest.json under not_of_this_run\n",
-                 manifest.directory().c_str(), foreign.size(), foreign.front().c_str());
+    std::fprintf(
+        stderr,
+        "warning: '%s' holds %zu files that are not of this run (e.g. '%s'); they are left alone and listed in "
+        "manifest.json under not_of_this_run\n",
+        manifest.directory().c_str(), foreign.size(), foreign.front().c_str());
   }
 }
 
@@ -812,8 +838,12 @@ class SceneRun {
  public:
   // manifest: the writer's, with an output directory (else null).
   SceneRun(const Scene& scene, const SceneRunOptions& options, RunManifest* manifest)
-      : scene_(scene), options_(options), out_(options.output_directory), manifest_(manifest),
-        writer_(processes::is_writer()), progress_(options.progress && writer_) {}
+      : scene_(scene),
+        options_(options),
+        out_(options.output_directory),
+        manifest_(manifest),
+        writer_(processes::is_writer()),
+        progress_(options.progress && writer_) {}
   void run_foundations();
   void run_sweep();
   bool all_completed() const { return all_completed_; }
@@ -886,13 +916,13 @@ void SceneRun::run_foundation(const SceneFoundation& f) {
 // The run's line of results, and the target-error mode's estimate against its target.
 void SceneRun::print_result(const SceneFoundation& f, const FoundationRunResult& r) const {
   if (progress_)
-    std::printf("  %s: %s in %.2f s (VTU output %.2f s), %d Newton iterations (max %d per step); max|ux| = %.4g m, "
-                "max|uy| = %.4g m%s, phi in [%.4g, %.4g] V%s\n",
-                f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.vtu_seconds,
-                r.newton_iterations_total,
-                r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy,
-                r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min, r.phi_max,
-                r.message.empty() ? "" : ("; " + r.message).c_str());
+    std::printf(
+        "  %s: %s in %.2f s (VTU output %.2f s), %d Newton iterations (max %d per step); max|ux| = %.4g m, "
+        "max|uy| = %.4g m%s, phi in [%.4g, %.4g] V%s\n",
+        f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.vtu_seconds, r.newton_iterations_total,
+        r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy,
+        r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min, r.phi_max,
+        r.message.empty() ? "" : ("; " + r.message).c_str());
   if (progress_ && scene_.target_choice) {
     const double space = r.space_error_peak(), time = r.time_error_peak;
     std::printf("  %s: target error %.3g, estimated %.3g (space %.3g + time %.3g; predicted %.3g + %.3g)\n",
@@ -950,7 +980,7 @@ void SceneRun::sweep_phi_f(const SceneFoundation& swept) {
 }  // namespace
 
 bool run_scene(const Scene& scene, const SceneRunOptions& options) {
-  set_assembly_threads(scene.threads);  // 0: PIEZOCONTACT_THREADS or the cores
+  set_assembly_threads(scene.threads);               // 0: PIEZOCONTACT_THREADS or the cores
   if (scene.target_error && !scene.target_choice) {  // the target-error mode: choose, then run the choice
     const bool talk = options.progress && processes::is_writer();
     if (talk) std::printf("target error %g: pilot runs\n", *scene.target_error);

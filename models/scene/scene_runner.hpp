@@ -24,9 +24,9 @@ namespace pc {
 
 struct SceneRunOptions {
   std::string output_directory;
-  bool progress = true;                 // progress lines on stdout
-  std::vector<std::string> only;        // run only these foundations (empty: all)
-  bool sweep = true;                    // run the phi_f sweep if the scene has one
+  bool progress = true;           // progress lines on stdout
+  std::vector<std::string> only;  // run only these foundations (empty: all)
+  bool sweep = true;              // run the phi_f sweep if the scene has one
   // Continue the run recorded in the directory's manifest.json (same scene): completed parts are kept,
   // a stopped or killed one continues from its last checkpoint (or starts again if it has none).
   bool resume = false;
@@ -34,7 +34,7 @@ struct SceneRunOptions {
 
 // How one run of a foundation writes and where it starts.
 struct FoundationRunOptions {
-  std::string directory;   // empty: nothing is written (studies, tests)
+  std::string directory;  // empty: nothing is written (studies, tests)
   bool progress = true;
   int steps_override = 0;  // > 0 replaces the scene's number of steps
   // Continue from directory/checkpoint.bin (written every output.checkpoint_every steps and at a stop):
@@ -50,8 +50,8 @@ struct FoundationRunResult {
   std::string foundation;
   bool completed = false;
   int steps = 0, ndof = 0, newton_iterations_total = 0, newton_iterations_max_per_step = 0;
-  int cutbacks = 0;  // failed step attempts that were retried with a smaller step
-  int rejections = 0;  // time.adaptive: attempts rejected on their estimated time error
+  int cutbacks = 0;                        // failed step attempts that were retried with a smaller step
+  int rejections = 0;                      // time.adaptive: attempts rejected on their estimated time error
   std::vector<FieldTimeError> time_error;  // the estimated time error at the end, per field (global)
   // The estimated spatial error of the final state, relative to the largest norm the field had at an
   // output step or the end (space_error_scale), as the time error is relative to its largest RMS; and the
@@ -63,18 +63,17 @@ struct FoundationRunResult {
   double space_error_peak() const;
   double wall_seconds = 0;
   double max_abs_ux = 0, max_abs_uy = 0, phi_min = 0, phi_max = 0, uy_corner = 0, ux_corner = 0, phi_center = 0;
-  int dim = 2;                            // of the mesh: max_abs_uz and uz_corner are results in 3D only
+  int dim = 2;  // of the mesh: max_abs_uz and uz_corner are results in 3D only
   double max_abs_uz = 0, uz_corner = 0;
   double max_abs_vtau_contact = 0;
   int n_slip_nodes = 0, n_contact_nodes = 0;
   // Time per phase, summed over the Newton solves of the steps and of the initial potential, and the
   // sparse factorisations done. jacobian_seconds is the Jacobian's part of assembly_seconds (the rest is
   // the residual's); factorize_seconds includes the symbolic analyses.
-  double assembly_seconds = 0, jacobian_seconds = 0, factorize_seconds = 0, solve_seconds = 0,
-         condensation_seconds = 0;
+  double assembly_seconds = 0, jacobian_seconds = 0, factorize_seconds = 0, solve_seconds = 0, condensation_seconds = 0;
   int factorizations = 0;
   std::string linear_strategy;  // solver.condensation = "auto": what the cost model chose and why
-  FactorEstimate full_factors;   // the full factorisations' solver's prediction (summary.json: factorization)
+  FactorEstimate full_factors;  // the full factorisations' solver's prediction (summary.json: factorization)
   // Writing the results: history rows (probes included), the VTU series, checkpoints and the final tables
   // (summary.json, written after the wall time is taken, is not in it).
   double output_seconds = 0;
@@ -107,8 +106,8 @@ FoundationRunResult run_foundation(const Scene& scene, const SceneFoundation& fo
                                    bool progress, int steps_override = 0);
 
 // Runs the scene as SceneRunOptions say; returns false if a run did not complete. A scene with a
-// target_error is first given its discretisation (models/scene/target_error.hpp: pilots, then the choice). A non-empty output
-// directory is locked (OutputDirectoryLock) before the first step. A run whose state or results become
+// target_error is first given its discretisation (models/scene/target_error.hpp: pilots, then the choice). A non-empty
+// output directory is locked (OutputDirectoryLock) before the first step. A run whose state or results become
 // non-finite stops there: nothing non-finite is written, and its summary.json says completed = false
 // with the message. The reason a run stopped is printed on stderr whatever options.progress says.
 bool run_scene(const Scene& scene, const SceneRunOptions& options);

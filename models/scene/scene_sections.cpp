@@ -42,7 +42,8 @@ struct MemoryLimit {
 MemoryLimit memory_limit(const Json& scene_json) {
   MemoryLimit limit{available_memory_bytes(), "available to this run (the machine's free memory, or ulimit -v)"};
   if (const auto solver = scene_json.find("solver"))
-    if (const auto cap = solver->find("max_memory_gib")) limit = {cap->as_positive() * 1073741824.0, "allowed by 'solver.max_memory_gib'"};
+    if (const auto cap = solver->find("max_memory_gib"))
+      limit = {cap->as_positive() * 1073741824.0, "allowed by 'solver.max_memory_gib'"};
   return limit;
 }
 
@@ -61,9 +62,10 @@ void require_fits(const Json& scene_json, const Json& m, int dim, const int* cel
 
 std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, const std::string& directory,
                                        Scene& scene) {
-  require_known_keys(m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor",
-                         "max_seconds"});
-  require(!(m.contains("gmsh") && m.contains("generator")), "scene: 'mesh' gives both generator and gmsh: a mesh "
+  require_known_keys(
+      m, {"generator", "gmsh", "x", "y", "z", "nx", "ny", "nz", "cell", "order", "size_factor", "max_seconds"});
+  require(!(m.contains("gmsh") && m.contains("generator")),
+          "scene: 'mesh' gives both generator and gmsh: a mesh "
           "is generated or read, not both");
   if (const auto file = m.find("gmsh")) {
     std::filesystem::path path = file->as_string();
@@ -77,8 +79,8 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
     scene.mesh_file = file->as_string();
     scene.mesh_size_factor = options.mesh_size_factor;
     auto mesh = std::make_shared<const Mesh>(import_gmsh(path.string(), options));
-    scene.mesh_description = message("gmsh '", file->as_string(), "': ", mesh->num_cells(), " ",
-                                     to_string(mesh->cell_shape()), "s");
+    scene.mesh_description =
+        message("gmsh '", file->as_string(), "': ", mesh->num_cells(), " ", to_string(mesh->cell_shape()), "s");
     return mesh;
   }
   const std::string generator = m.at("generator").as_string();
@@ -91,8 +93,10 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
   if (generator == "rectangle") {
     const int cells[2] = {scene.nx, scene.ny};
     require_fits(scene_json, m, 2, cells);
-    require(cell == "triangle" || cell == "quadrilateral", "scene: 'mesh.cell' must be triangle or quadrilateral for "
-            "a rectangle, got '", cell, "'");
+    require(cell == "triangle" || cell == "quadrilateral",
+            "scene: 'mesh.cell' must be triangle or quadrilateral for "
+            "a rectangle, got '",
+            cell, "'");
     scene.mesh_description = message(scene.nx, " x ", scene.ny, " ", cell, "s");
     return std::make_shared<const Mesh>(rectangle_mesh({x[0], y[0]}, {x[1], y[1]}, scene.nx, scene.ny,
                                                        cell == "triangle" ? Shape::Triangle : Shape::Quadrilateral));
@@ -103,8 +107,10 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
     scene.mesh_spacing.push_back((z[1] - z[0]) / nz);
     const int cells[3] = {scene.nx, scene.ny, nz};
     require_fits(scene_json, m, 3, cells);
-    require(cell == "tetrahedron" || cell == "hexahedron", "scene: 'mesh.cell' must be tetrahedron or hexahedron "
-            "for a box, got '", cell, "'");
+    require(cell == "tetrahedron" || cell == "hexahedron",
+            "scene: 'mesh.cell' must be tetrahedron or hexahedron "
+            "for a box, got '",
+            cell, "'");
     scene.mesh_description = message(scene.nx, " x ", scene.ny, " x ", nz, " ", cell, "s");
     return std::make_shared<const Mesh>(box_mesh({x[0], y[0], z[0]}, {x[1], y[1], z[1]}, scene.nx, scene.ny, nz,
                                                  cell == "tetrahedron" ? Shape::Tetrahedron : Shape::Hexahedron));
@@ -114,9 +120,10 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
 
 // A constant or linearly growing load: value, or value * t.
 Load make_load(std::vector<double> value, const std::string& time) {
-  if (time == "constant") return [value](const double*, double, double* out) {
-    for (size_t i = 0; i < value.size(); ++i) out[i] = value[i];
-  };
+  if (time == "constant")
+    return [value](const double*, double, double* out) {
+      for (size_t i = 0; i < value.size(); ++i) out[i] = value[i];
+    };
   return [value](const double*, double t, double* out) {
     for (size_t i = 0; i < value.size(); ++i) out[i] = value[i] * t;
   };
@@ -131,8 +138,8 @@ bool all_zero(const std::vector<double>& v) {
 void require_region(const Mesh& mesh, const Json& at, const std::string& name, RegionKind kind) {
   std::string known;
   for (const std::string& n : mesh.region_names()) known += (known.empty() ? "" : ", ") + n;
-  require(mesh.has_region(name), "scene: '", at.path(), "' names region '", name, "', which the mesh lacks (it has: ",
-          known, ")");
+  require(mesh.has_region(name), "scene: '", at.path(), "' names region '", name,
+          "', which the mesh lacks (it has: ", known, ")");
   require(mesh.region_kind(name) == kind, "scene: '", at.path(), "': region '", name, "' must be a ",
           kind == RegionKind::Faces ? "face (boundary)" : "cell", " region");
 }
@@ -150,7 +157,8 @@ void require_file_name(const Json& at, const std::string& name) {
   const bool plain = std::all_of(name.begin(), name.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
   });
-  require(plain && name.front() != '.', "scene: '", at.path(), "' = '", name, "' must be a plain file name "
+  require(plain && name.front() != '.', "scene: '", at.path(), "' = '", name,
+          "' must be a plain file name "
           "(letters, digits, _ - ., not starting with a dot): it names output files");
 }
 
@@ -158,10 +166,11 @@ void require_file_name(const Json& at, const std::string& name) {
 constexpr double kMaxGridPoints = 1e7;
 
 // Every point must lie in the mesh (within round-off of its boundary): a probe outside it has no value.
-void require_points_in_mesh(const PointLocator& locator, const Json& at, const std::vector<std::array<double, 3>>& points) {
+void require_points_in_mesh(const PointLocator& locator, const Json& at,
+                            const std::vector<std::array<double, 3>>& points) {
   for (const auto& x : points)
-    require(locator.locate(x.data()).has_value(), "scene: '", at.path(), "': the point (", x[0], ", ", x[1], ", ",
-            x[2], ") is outside the mesh");
+    require(locator.locate(x.data()).has_value(), "scene: '", at.path(), "': the point (", x[0], ", ", x[1], ", ", x[2],
+            ") is outside the mesh");
 }
 
 // time.adaptive: the tolerance alone, or an object with it and the controller's bounds.
@@ -191,8 +200,10 @@ std::vector<std::string> read_vtu_fields(const Json& list, bool electric) {
                                     [&](const SceneVtuField& f) { return f.name == name; });
     require(field != scene_vtu_fields().end(), "scene: '", item.path(), "' = '", name,
             "' is not a field of the VTU files (known: ", known, ")");
-    require(electric || !field->electric, "scene: '", item.path(), "' = '", name, "': the body is not piezoelectric "
-            "(no material.piezo_E), so its VTU files have no ", name);
+    require(electric || !field->electric, "scene: '", item.path(), "' = '", name,
+            "': the body is not piezoelectric "
+            "(no material.piezo_E), so its VTU files have no ",
+            name);
     require(std::find(names.begin(), names.end(), name) == names.end(), "scene: '", item.path(), "' = '", name,
             "' is listed twice");
     names.push_back(name);
@@ -206,9 +217,11 @@ std::vector<std::string> read_vtu_fields(const Json& list, bool electric) {
 void read_output_grid(const Json& g, int dim, SceneGrid& grid) {
   // A 3D scene samples a volume or the planes it names (z: [c, c, 1]), never a default plane; a 2D
   // scene has no z to sample.
-  require(dim == 3 || !g.contains("z"), "scene: '", g.path(), ".z' is given, but the scene is 2D (its mesh "
+  require(dim == 3 || !g.contains("z"), "scene: '", g.path(),
+          ".z' is given, but the scene is 2D (its mesh "
           "has no z): remove it");
-  require(dim == 2 || g.contains("z"), "scene: '", g.path(), ".z' is required in a 3D scene: [min, max, "
+  require(dim == 2 || g.contains("z"), "scene: '", g.path(),
+          ".z' is required in a 3D scene: [min, max, "
           "points] (a plane z = c is [c, c, 1])");
   require_known_keys(g, dim == 3 ? std::vector<std::string>{"x", "y", "z"} : std::vector<std::string>{"x", "y"});
   std::vector<std::pair<const char*, std::vector<double>>> axes = {{"x", g.at("x").as_vector(3)},
@@ -242,11 +255,13 @@ void read_output_grid(const Json& g, int dim, SceneGrid& grid) {
 namespace scene_detail {
 
 void read_name(SceneReading& r) {
-  r.scene.name = r.problems.check([&] {
-    const std::string name = r.json.at("name").as_string();
-    require_file_name(r.json.at("name"), name);
-    return name;
-  }).value_or("unnamed");
+  r.scene.name = r.problems
+                     .check([&] {
+                       const std::string name = r.json.at("name").as_string();
+                       require_file_name(r.json.at("name"), name);
+                       return name;
+                     })
+                     .value_or("unnamed");
 }
 
 void check_top_level_keys(SceneReading& r) {
@@ -298,20 +313,25 @@ void read_material(SceneReading& r) {
       const auto poling = m.find("poling");
       r.preset_named = p.has_value();
       if (!p) {
-        require(!poling, "scene: 'material.poling' goes with 'material.preset' (the axis the preset is poled "
+        require(!poling,
+                "scene: 'material.poling' goes with 'material.preset' (the axis the preset is poled "
                 "along); explicit tensors are written for their own axes");
         return;
       }
       const PiezoMaterialPreset& material = piezo_material(p->as_string(), "scene: '" + p->path() + "'");
-      require(poling.has_value(), "scene: 'material.poling' is required with 'material.preset': the poling axis, x, "
+      require(poling.has_value(),
+              "scene: 'material.poling' is required with 'material.preset': the poling axis, x, "
               "y or z (the preset's tables are poled along z)");
       const Axis axis = axis_from_name(poling->as_string(), "scene: '" + poling->path() + "'");
-      require(r.dim == 3 || axis != Axis::z, "scene: '", poling->path(), "' is z, but a 2D model (plane strain in "
+      require(r.dim == 3 || axis != Axis::z, "scene: '", poling->path(),
+              "' is z, but a 2D model (plane strain in "
               "x-y) is poled in its plane: x or y");
       r.preset = material.tensors(r.dim, axis);
     });
-    if (r.preset && !m.contains("rho")) r.spec.rho = r.preset->rho;
-    else if (m.contains("rho") || !r.preset_named) r.spec.rho = m.at("rho").as_number_at_least(0);
+    if (r.preset && !m.contains("rho"))
+      r.spec.rho = r.preset->rho;
+    else if (m.contains("rho") || !r.preset_named)
+      r.spec.rho = m.at("rho").as_number_at_least(0);
   });
 }
 
@@ -360,7 +380,8 @@ void read_material_tensors(SceneReading& r) {
         spec.E = e ? e->as_matrix() : preset->E;
         spec.beta = beta ? beta->as_matrix() : preset->beta;
       } else {
-        require(e.has_value() == beta.has_value(), "scene: material.piezo_E and material.permittivity_beta go "
+        require(e.has_value() == beta.has_value(),
+                "scene: material.piezo_E and material.permittivity_beta go "
                 "together (both for a piezoelectric body, neither for a purely mechanical one)");
         if (!e) return;
         spec.E = e->as_matrix();
@@ -383,7 +404,8 @@ void read_regions(SceneReading& r) {
     if (const auto g = regions.find("grounded")) spec.grounded = names_of(*g);
     if (const auto c = regions.find("contact")) {
       spec.contact = c->as_string();
-      require(!spec.contact.empty(), "scene: 'regions.contact' is empty: name the contact region, or leave the key out "
+      require(!spec.contact.empty(),
+              "scene: 'regions.contact' is empty: name the contact region, or leave the key out "
               "for a body without contact");
     }
     if (!spec.mesh) return;
@@ -392,8 +414,10 @@ void read_regions(SceneReading& r) {
     if (!spec.contact.empty()) require_region(*spec.mesh, regions.at("contact"), spec.contact, RegionKind::Faces);
     if (const auto c = regions.find("charge"))
       for (const std::string& n : names_of(*c)) require_region(*spec.mesh, *c, n, RegionKind::Faces);
-    require(!spec.clamped.empty(), "scene: 'regions.clamped' is empty: the body needs a clamped side (meas Gamma_D > 0)");
-    require(!r.electric || !spec.grounded.empty(), "scene: 'regions.grounded' is empty: the potential needs a grounded "
+    require(!spec.clamped.empty(),
+            "scene: 'regions.clamped' is empty: the body needs a clamped side (meas Gamma_D > 0)");
+    require(!r.electric || !spec.grounded.empty(),
+            "scene: 'regions.grounded' is empty: the potential needs a grounded "
             "side (meas Gamma_a > 0)");
   });
 }
@@ -415,8 +439,10 @@ void read_loads(SceneReading& r) {
         const std::string region = item.at("region").as_string();
         if (spec.mesh) require_region(*spec.mesh, item.at("region"), region, RegionKind::Faces);
         const std::string time = item.contains("time") ? item.at("time").as_string() : "constant";
-        require(time == "constant" || time == "linear", "scene: '", item.path(), ".time' must be constant or linear "
-                "(value * t), got '", time, "'");
+        require(time == "constant" || time == "linear", "scene: '", item.path(),
+                ".time' must be constant or linear "
+                "(value * t), got '",
+                time, "'");
         spec.tractions.push_back({region, make_load(item.at("value").as_vector(size_t(dim)), time),
                                   time == "constant" ? LoadTime::Constant : LoadTime::Varying});
       }
@@ -441,7 +467,8 @@ void read_contact(SceneReading& r) {
     const ChosenEntry chosen_friction{"law_tangential '" + friction.name + "'", &friction.parameters};
     for (const ParameterDeclaration& d : friction.parameters)
       require(!find_parameter(normal.parameters, d.name), "scene: 'contact.", d.name, "' would be read by both ",
-              chosen_normal.label, " and ", chosen_friction.label, ": laws paired in one contact object need "
+              chosen_normal.label, " and ", chosen_friction.label,
+              ": laws paired in one contact object need "
               "distinct parameter names");
     require_read_keys(c, {"law_normal", "law_tangential", "foundation_velocity"}, {chosen_normal, chosen_friction},
                       {registered_parameters("law_normal", normal_law_registry()),
@@ -466,7 +493,8 @@ void read_electrodes(SceneReading& r) {
   const auto electrodes = r.json.find("electrodes");
   if (!electrodes) return;
   r.problems.check_void([&] {
-    require(r.electric, "scene: 'electrodes': a purely mechanical body (no material.piezo_E) has no potential to drive");
+    require(r.electric,
+            "scene: 'electrodes': a purely mechanical body (no material.piezo_E) has no potential to drive");
     std::vector<std::string> names;
     for (const Json& item : electrodes->as_array()) {
       r.problems.check_void([&] {
@@ -474,13 +502,15 @@ void read_electrodes(SceneReading& r) {
         const bool floating = item.find("floating") && item.at("floating").as_bool();
         Electrode electrode;
         if (floating) {
-          require(!item.find("voltage"), "scene: '", item.path(), "': a floating electrode's voltage is computed; "
+          require(!item.find("voltage"), "scene: '", item.path(),
+                  "': a floating electrode's voltage is computed; "
                   "give its 'charge' (default 0, an open circuit) instead of a 'voltage'");
-          electrode = floating_electrode(item.at("name").as_string(), item.at("region").as_string(),
-                                         item.find("charge") ? time_function_from_json(item.at("charge"))
-                                                             : TimeFunction::constant(0));
+          electrode = floating_electrode(
+              item.at("name").as_string(), item.at("region").as_string(),
+              item.find("charge") ? time_function_from_json(item.at("charge")) : TimeFunction::constant(0));
         } else {
-          require(!item.find("charge"), "scene: '", item.path(), "': a driven electrode's charge is measured; "
+          require(!item.find("charge"), "scene: '", item.path(),
+                  "': a driven electrode's charge is measured; "
                   "'charge' is for a floating one (\"floating\": true)");
           electrode = Electrode{item.at("name").as_string(), item.at("region").as_string(),
                                 time_function_from_json(item.at("voltage"))};
@@ -529,8 +559,9 @@ void read_bricks(SceneReading& r) {
         const ChosenEntry chosen{"brick type '" + entry.name + "'", &entry.parameters};
         require_read_keys(item, {"type", "region"}, {chosen}, {registered_parameters("brick type", brick_registry())});
         const std::string region = item.at("region").as_string();
-        if (spec.mesh) require(spec.mesh->has_region(region), "scene: '", item.path(), ".region' names region '",
-                               region, "', which the mesh lacks");
+        if (spec.mesh)
+          require(spec.mesh->has_region(region), "scene: '", item.path(), ".region' names region '", region,
+                  "', which the mesh lacks");
         spec.bricks.push_back({{entry.name, read_parameters(item, chosen)}, region});
       });
     }
@@ -544,8 +575,9 @@ void read_time(SceneReading& r) {
     const Json& t = r.json.at("time");
     const auto& scheme = chosen_entry(t, "scheme", time_scheme_registry(), "backward_euler");
     const ChosenEntry chosen{"time.scheme '" + scheme.name + "'", &scheme.parameters};
-    require_read_keys(t, {"T", "steps", "u0", "v0", "prediction", "scheme", "max_attempts", "max_wall_seconds", "adaptive",
-                           "error_estimate"},
+    require_read_keys(t,
+                      {"T", "steps", "u0", "v0", "prediction", "scheme", "max_attempts", "max_wall_seconds", "adaptive",
+                       "error_estimate"},
                       {chosen}, {registered_parameters("time.scheme", time_scheme_registry())});
     r.spec.scheme = {scheme.name, read_parameters(t, chosen)};
     scene.end_time = t.at("T").as_positive();
@@ -561,21 +593,25 @@ void read_time(SceneReading& r) {
     }
     if (const auto x = t.find("adaptive")) {
       scene.adaptive = read_adaptive_steps(*x, scene.end_time);
-      require(scene.estimate_time_error, "scene: '", x->path(), "' needs the time error estimate, which "
+      require(scene.estimate_time_error, "scene: '", x->path(),
+              "' needs the time error estimate, which "
               "time.error_estimate = none turns off");
     }
     if (const auto x = r.json.find("target_error")) {
       scene.target_error = x->as_number_in(1e-6, 0.5);
-      require(!scene.mesh_generator.empty(), "scene: 'target_error' chooses the mesh size of a generated mesh "
-              "(mesh.generator); this scene's mesh is the gmsh file '", scene.mesh_file, "'");
-      require(scene.estimate_time_error, "scene: 'target_error' needs the time error estimate, which "
+      require(!scene.mesh_generator.empty(),
+              "scene: 'target_error' chooses the mesh size of a generated mesh "
+              "(mesh.generator); this scene's mesh is the gmsh file '",
+              scene.mesh_file, "'");
+      require(scene.estimate_time_error,
+              "scene: 'target_error' needs the time error estimate, which "
               "time.error_estimate = none turns off");
     }
     scene.u0 = t.contains("u0") ? t.at("u0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     scene.v0 = t.contains("v0") ? t.at("v0").as_vector(size_t(dim)) : std::vector<double>(dim, 0.0);
     const std::string p = t.contains("prediction") ? t.at("prediction").as_string() : "previous";
-    require(p == "zero" || p == "previous", "scene: 'time.prediction' must be zero (the paper's) or previous, got '",
-            p, "'");
+    require(p == "zero" || p == "previous", "scene: 'time.prediction' must be zero (the paper's) or previous, got '", p,
+            "'");
     scene.prediction = p == "zero" ? Prediction::Zero : Prediction::Previous;
   });
 }
@@ -588,9 +624,9 @@ void read_solver(SceneReading& r) {
     scene.newton.dense_memory_budget_bytes = 0.25 * memory_limit(r.json).bytes;
     const auto s = r.json.find("solver");
     if (!s) return;
-    require_known_keys(*s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog",
-                            "cutback_factor", "condensed", "condensation", "condensed_max_dofs", "contact_newton",
-                            "max_memory_gib", "threads"});
+    require_known_keys(
+        *s, {"linear", "max_iterations", "relative_tolerance", "line_search", "watchdog", "cutback_factor", "condensed",
+             "condensation", "condensed_max_dofs", "contact_newton", "max_memory_gib", "threads"});
     if (const auto x = s->find("threads")) scene.threads = x->as_int_at_least(1);
     if (const auto x = s->find("condensed"))
       scene.newton.condensed_max_fraction = x->as_bool() ? NewtonOptions{}.condensed_max_fraction : 0.0;
@@ -605,10 +641,10 @@ void read_solver(SceneReading& r) {
       // A tolerance below the residual's round-off floor could never be met (Newton would stop the run,
       // NewtonOutcome::RoundOffFloor): refused here, before anything is built.
       scene.newton.relative_tolerance = x->as_number_in(0, 1);
-      require(scene.newton.relative_tolerance >= min_relative_tolerance(), "scene: '", x->path(), "' = ",
-              scene.newton.relative_tolerance, " is below the residual's round-off floor: the smallest relative ",
-              "tolerance Newton can meet is ", min_relative_tolerance(), " (", kRoundOffFloorFactor,
-              " machine epsilons)");
+      require(scene.newton.relative_tolerance >= min_relative_tolerance(), "scene: '", x->path(),
+              "' = ", scene.newton.relative_tolerance,
+              " is below the residual's round-off floor: the smallest relative ", "tolerance Newton can meet is ",
+              min_relative_tolerance(), " (", kRoundOffFloorFactor, " machine epsilons)");
     }
     if (const auto x = s->find("line_search")) scene.newton.line_search = x->as_bool();
     if (const auto x = s->find("watchdog")) scene.newton.watchdog = x->as_int_at_least(0);
@@ -625,9 +661,9 @@ void read_output(SceneReading& r) {
   r.problems.check_void([&] {
     const auto o = r.json.find("output");
     if (!o) return;
-    require_known_keys(*o, {"vtu_every", "vtu_format", "vtu_fields", "progress_every", "space_error_every", "probes", "grid",
-                            "slip_threshold", "phi_f_sweep", "sweep_steps", "checkpoint_every", "contact_history",
-                            "energy_books"});
+    require_known_keys(
+        *o, {"vtu_every", "vtu_format", "vtu_fields", "progress_every", "space_error_every", "probes", "grid",
+             "slip_threshold", "phi_f_sweep", "sweep_steps", "checkpoint_every", "contact_history", "energy_books"});
     if (const auto x = o->find("vtu_every")) out.vtu_every = x->as_int_at_least(1);
     if (const auto x = o->find("vtu_format"))
       out.vtu_format = vtu_format_from_name(x->as_string(), "scene: '" + x->path() + "'");

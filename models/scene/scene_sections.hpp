@@ -18,8 +18,7 @@ namespace pc::scene_detail {
 class Problems {
  public:
   // Runs the check; a pc::Error it throws becomes one problem and the result is empty.
-  template <class F>
-  auto check(F&& f) -> std::optional<decltype(f())> {
+  template <class F> auto check(F&& f) -> std::optional<decltype(f())> {
     try {
       return f();
     } catch (const Error& e) {

@@ -9,8 +9,10 @@ namespace pc {
 
 TimeFunction time_function_from_json(const Json& value) {
   if (value.is_number()) return TimeFunction::constant(value.as_number());
-  require(value.is_object(), "scene: '", value.path(), "' must be a number or a time function "
-          "{\"type\": \"constant\" | \"ramp\" | \"sine\" | \"table\", ...}, got ", value.dump(0));
+  require(value.is_object(), "scene: '", value.path(),
+          "' must be a number or a time function "
+          "{\"type\": \"constant\" | \"ramp\" | \"sine\" | \"table\", ...}, got ",
+          value.dump(0));
   const std::string type = value.at("type").as_string();
   // The factories' own messages name the argument; the scene's prefix names where it is.
   auto made = [&](auto&& make) {

@@ -33,7 +33,8 @@ struct PilotResult {
 int scaled(int n, double factor) { return n > 0 ? std::max(1, int(std::lround(n * factor))) : 0; }
 
 // A setting: the order, the scheme, the mesh (cells along each axis scaled by factor) and the tolerance.
-TargetErrorChoice setting(int order, const std::string& scheme, int nx, int ny, int nz, double factor, double tolerance) {
+TargetErrorChoice setting(int order, const std::string& scheme, int nx, int ny, int nz, double factor,
+                          double tolerance) {
   TargetErrorChoice c;
   c.order = order;
   c.scheme = scheme;
@@ -129,7 +130,8 @@ std::string rates_text(const std::vector<PilotSet>& pilots) {
 // The least predicted cost that reaches the target, and the closest to it (for the refusal).
 struct Search {
   TargetErrorChoice best, closest;
-  double best_seconds = std::numeric_limits<double>::infinity(), closest_error = std::numeric_limits<double>::infinity();
+  double best_seconds = std::numeric_limits<double>::infinity(),
+         closest_error = std::numeric_limits<double>::infinity();
 };
 
 void search_candidates(const PilotSet& set, int dim, double memory, double target, Search& found) {
@@ -139,7 +141,8 @@ void search_candidates(const PilotSet& set, int dim, double memory, double targe
     const double factor = std::pow(2.0, j / 2.0);  // over the finer pilot's mesh, 1/2 to 32
     const double space = fine.result.space * std::pow(factor, -set.space.used);
     const double dofs = fine.result.dofs * std::pow(factor, dim);
-    const int cells[3] = {scaled(fine.setting.nx, factor), scaled(fine.setting.ny, factor), scaled(fine.setting.nz, factor)};
+    const int cells[3] = {scaled(fine.setting.nx, factor), scaled(fine.setting.ny, factor),
+                          scaled(fine.setting.nz, factor)};
     if (dofs > kMaxDofs || (memory > 0 && estimate_structured_run(dim, cells, order).bytes > memory)) break;
     for (int k = -2; k <= 30; ++k) {  // tolerances from twice the pilots' down, in steps of 2^(1/2)
       const double tolerance = fine.setting.tolerance * std::pow(2.0, -k / 2.0);
@@ -147,8 +150,8 @@ void search_candidates(const PilotSet& set, int dim, double memory, double targe
       const double shrink = fine.setting.tolerance / tolerance;
       const double time = fine.result.time * std::pow(shrink, -set.time.used);
       const double attempts = fine.result.attempts * std::pow(shrink, set.steps.used);
-      TargetErrorChoice c = setting(order, fine.setting.scheme, fine.setting.nx, fine.setting.ny, fine.setting.nz,
-                                    factor, tolerance);
+      TargetErrorChoice c =
+          setting(order, fine.setting.scheme, fine.setting.nx, fine.setting.ny, fine.setting.nz, factor, tolerance);
       c.target = target;
       c.dofs = int(dofs);
       c.steps = int(std::lround(attempts));
@@ -205,15 +208,15 @@ TargetErrorChoice choose_for_target_error(const Scene& scene, const std::vector<
   const TargetErrorChoice& closest = found.closest;
   require(std::isfinite(found.best_seconds), "target error ", target, ": no setting that fits in memory (and ",
           kMaxDofs, " dofs) is predicted to reach it; the closest, ", closest.description(), ", is predicted to reach ",
-          sig3(closest.predicted_space + closest.predicted_time), " (space ", sig3(closest.predicted_space),
-          " + time ", sig3(closest.predicted_time), ") in ", sig3(closest.predicted_seconds),
-          " s. Raise the target, or the memory (solver.max_memory_gib), or run that setting with --set (",
-          pilots_text, ")");
+          sig3(closest.predicted_space + closest.predicted_time), " (space ", sig3(closest.predicted_space), " + time ",
+          sig3(closest.predicted_time), ") in ", sig3(closest.predicted_seconds),
+          " s. Raise the target, or the memory (solver.max_memory_gib), or run that setting with --set (", pilots_text,
+          ")");
   TargetErrorChoice best = found.best;
   best.target = target;
-  best.explanation = message("chose ", best.description(), ": predicted space ", sig3(best.predicted_space),
-                             " + time ", sig3(best.predicted_time), " <= ", target, " in ",
-                             sig3(best.predicted_seconds), " s, the least predicted cost (", pilots_text, ")");
+  best.explanation = message("chose ", best.description(), ": predicted space ", sig3(best.predicted_space), " + time ",
+                             sig3(best.predicted_time), " <= ", target, " in ", sig3(best.predicted_seconds),
+                             " s, the least predicted cost (", pilots_text, ")");
   return best;
 }
 

@@ -27,7 +27,8 @@ double largest_entry_in_rows(const CsrMatrix& A, const std::vector<int>& rows) {
   return largest;
 }
 
-bool same_entries(const std::vector<Eigen::Triplet<double, int>>& a, const std::vector<Eigen::Triplet<double, int>>& b) {
+bool same_entries(const std::vector<Eigen::Triplet<double, int>>& a,
+                  const std::vector<Eigen::Triplet<double, int>>& b) {
   if (a.size() != b.size()) return false;
   for (size_t k = 0; k < a.size(); ++k)
     if (a[k].row() != b[k].row() || a[k].col() != b[k].col() || a[k].value() != b[k].value()) return false;
@@ -37,7 +38,10 @@ bool same_entries(const std::vector<Eigen::Triplet<double, int>>& a, const std::
 }  // namespace
 
 CondensedSolve::CondensedSolve(LinearStrategy method, std::string linear_solver, double max_fraction, int max_dofs)
-    : method_(method == LinearStrategy::Columns ? method : LinearStrategy::Schur), linear_solver_name_(std::move(linear_solver)), max_fraction_(max_fraction), max_dofs_(max_dofs) {}
+    : method_(method == LinearStrategy::Columns ? method : LinearStrategy::Schur),
+      linear_solver_name_(std::move(linear_solver)),
+      max_fraction_(max_fraction),
+      max_dofs_(max_dofs) {}
 
 bool CondensedSolve::applies(NonlinearProblem& problem) const {
   return applies_in_proportion(problem) && double(problem.nonlinear_dofs().size()) <= double(max_dofs_);
@@ -176,7 +180,8 @@ Eigen::VectorXd CondensedSolve::timed_reduce(const Eigen::VectorXd& b, LinearSol
   return r;
 }
 
-Eigen::VectorXd CondensedSolve::solve_interface(NonlinearProblem& problem, const Eigen::VectorXd& r, LinearSolveCost& cost) {
+Eigen::VectorXd CondensedSolve::solve_interface(NonlinearProblem& problem, const Eigen::VectorXd& r,
+                                                LinearSolveCost& cost) {
   return interface_step(nonlinear_part(problem, cost), r, cost);
 }
 
@@ -194,7 +199,8 @@ Eigen::VectorXd CondensedSolve::schur_step(const NonlinearPart& D, const Eigen::
 
 // (S_c + D) x_c = r by Woodbury on S_c^-1 over the active dofs I:
 //   x_c = t - S_c^-1[:, I] (1 + D_II S_c^-1[I, I])^-1 D_II t_I,  t = S_c^-1 r.
-Eigen::VectorXd CondensedSolve::interface_step(const NonlinearPart& D, const Eigen::VectorXd& r, LinearSolveCost& cost) {
+Eigen::VectorXd CondensedSolve::interface_step(const NonlinearPart& D, const Eigen::VectorXd& r,
+                                               LinearSolveCost& cost) {
   const auto t = Clock::now();
   Eigen::VectorXd x_c;
   const std::vector<int>& active = D.active;

@@ -97,7 +97,7 @@ class CondensedSolve {
   const NonlinearProblem* problem_ = nullptr;
   std::uint64_t version_ = 0;
   std::vector<int> nonlinear_;
-  std::vector<int> position_;  // position of a global dof among the nonlinear dofs, or -1
+  std::vector<int> position_;             // position of a global dof among the nonlinear dofs, or -1
   std::vector<double> nonlinear_values_;  // J - A on the nonlinear rows (NonlinearProblem::nonlinear_part)
   // Schur: the factorisation, and S_c^-1 when S_c is regular (else S_c + D is factorised per iteration).
   std::unique_ptr<SchurComplement> schur_;

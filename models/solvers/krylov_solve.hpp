@@ -58,8 +58,8 @@ class KrylovSolve {
   bool renew_ = true;
   double factorize_seconds_ = 0;  // the last factorisation's time
   double iteration_seconds_ = 0;  // the last GMRES iteration's (a solve and a product with J)
-  int backoff_exponent_ = 0;   // +1 per failure of GMRES, -1 per success
-  int direct_steps_left_ = 0;  // before GMRES is tried again
+  int backoff_exponent_ = 0;      // +1 per failure of GMRES, -1 per success
+  int direct_steps_left_ = 0;     // before GMRES is tried again
 };
 
 }  // namespace pc

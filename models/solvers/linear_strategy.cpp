@@ -25,14 +25,25 @@ std::string to_string(LinearStrategy strategy) {
 }  // namespace pc
 
 PC_REGISTER(pc::condensation_registry(),
-            {"auto", "the cheapest of schur, krylov and a full factorisation per iteration by the printed cost model",
-             {}, pc::LinearStrategy::Auto})
+            {"auto",
+             "the cheapest of schur, krylov and a full factorisation per iteration by the printed cost model",
+             {},
+             pc::LinearStrategy::Auto})
 PC_REGISTER(pc::condensation_registry(),
-            {"schur", "MUMPS Schur complement of the interior: one solve's worth of work per Newton iteration, "
-                      "dense in the contact dofs", {}, pc::LinearStrategy::Schur})
+            {"schur",
+             "MUMPS Schur complement of the interior: one solve's worth of work per Newton iteration, "
+             "dense in the contact dofs",
+             {},
+             pc::LinearStrategy::Schur})
 PC_REGISTER(pc::condensation_registry(),
-            {"columns", "Woodbury columns by solves with solver.linear: two solves per iteration, dense in the "
-                        "contact dofs", {}, pc::LinearStrategy::Columns})
+            {"columns",
+             "Woodbury columns by solves with solver.linear: two solves per iteration, dense in the "
+             "contact dofs",
+             {},
+             pc::LinearStrategy::Columns})
 PC_REGISTER(pc::condensation_registry(),
-            {"krylov", "GMRES on J preconditioned by a kept factorisation of an earlier J: a few solves per "
-                       "iteration, nothing dense", {}, pc::LinearStrategy::Krylov})
+            {"krylov",
+             "GMRES on J preconditioned by a kept factorisation of an earlier J: a few solves per "
+             "iteration, nothing dense",
+             {},
+             pc::LinearStrategy::Krylov})

@@ -203,8 +203,8 @@ NewtonSolver::NewtonSolver(NewtonOptions options)
   require(options_.relative_tolerance >= 0 && options_.absolute_tolerance >= 0 && options_.increment_tolerance >= 0,
           "Newton: tolerances must be >= 0");
   require(options_.watchdog >= 0, "Newton: watchdog must be >= 0, got ", options_.watchdog);
-  require(options_.backtrack_factor > 0 && options_.backtrack_factor < 1, "Newton: backtrack_factor must be in (0, 1), got ",
-          options_.backtrack_factor);
+  require(options_.backtrack_factor > 0 && options_.backtrack_factor < 1,
+          "Newton: backtrack_factor must be in (0, 1), got ", options_.backtrack_factor);
   linear_ = make_model_solver(options_.linear_solver);
 }
 
@@ -214,13 +214,15 @@ LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
   // model has one share of it per process, which only MUMPS's distributed input sums.
   if (processes::distributed()) {
     if (named_strategy_ != LinearStrategy::Full && explanation_.empty())
-      explanation_ = message("distributed over ", processes::count(), " processes: a factorisation of J per "
+      explanation_ = message("distributed over ", processes::count(),
+                             " processes: a factorisation of J per "
                              "iteration, by MUMPS from each process's share (solver.condensation = '",
                              to_string(named_strategy_), "' needs the whole matrix on one process)");
     return LinearStrategy::Full;
   }
   if (named_strategy_ == LinearStrategy::Krylov) return LinearStrategy::Krylov;
-  if (named_strategy_ != LinearStrategy::Auto) return condensed_.applies(problem) ? condensed_.method() : LinearStrategy::Full;
+  if (named_strategy_ != LinearStrategy::Auto)
+    return condensed_.applies(problem) ? condensed_.method() : LinearStrategy::Full;
   // auto: where most dofs are nonlinear, J changes everywhere and only a factorisation per iteration applies.
   if (!condensed_.applies_in_proportion(problem)) return LinearStrategy::Full;
   const std::vector<int>& nonlinear = problem.nonlinear_dofs();
@@ -246,8 +248,9 @@ LinearStrategy NewtonSolver::strategy_for(NonlinearProblem& problem) {
   explanation_ = costs.explanation;
   if (chosen_ == LinearStrategy::Schur) krylov_.release();  // its analysis served the estimate only
   if (chosen_ != costs.choice)
-    explanation_ += message(", but ", nonlinear.size(), " contact dofs exceed solver.condensed_max_dofs = ",
-                            options_.condensed_max_dofs, ": krylov");
+    explanation_ +=
+        message(", but ", nonlinear.size(),
+                " contact dofs exceed solver.condensed_max_dofs = ", options_.condensed_max_dofs, ": krylov");
   return chosen_;
 }
 
@@ -286,7 +289,8 @@ Eigen::VectorXd NewtonSolver::step_by_strategy(NonlinearProblem& problem, const 
   return full_step(problem, rhs, report);
 }
 
-Eigen::VectorXd NewtonSolver::solve_tangent(NonlinearProblem& problem, const Eigen::VectorXd& rhs, LinearSolveCost& cost) {
+Eigen::VectorXd NewtonSolver::solve_tangent(NonlinearProblem& problem, const Eigen::VectorXd& rhs,
+                                            LinearSolveCost& cost) {
   NewtonReport report;
   Eigen::VectorXd dx = step(problem, rhs, report);
   cost += report;
@@ -340,8 +344,7 @@ struct NewtonSolver::Run {
   // whole residual is then assembled and judged. `stagnated` says the floor ended them.
   template <class System>
   std::optional<NewtonReport> iterate(System& system, const std::vector<ProblemBlock>& space, bool on_contact);
-  template <class System>
-  IterationState start_iterations(System& system, const std::vector<ProblemBlock>& space);
+  template <class System> IterationState start_iterations(System& system, const std::vector<ProblemBlock>& space);
   template <class System>
   std::optional<Ending> iterate_once(System& system, const std::vector<ProblemBlock>& space, bool on_contact,
                                      int iteration, IterationState& state);
@@ -369,11 +372,11 @@ struct NewtonSolver::Run {
   const Clock::time_point start = Clock::now();
   NewtonReport report;
   std::vector<ProblemBlock> blocks;
-  std::vector<double> initial_norms;  // of the residual at the initial iterate, per block
-  std::vector<double> scales;         // of the terms summed in that residual, per block
+  std::vector<double> initial_norms;    // of the residual at the initial iterate, per block
+  std::vector<double> scales;           // of the terms summed in that residual, per block
   std::optional<ConvergenceTest> test;  // set from the initial residual, once it is assembled
-  double merit0 = 0;       // the initial scaled residual
-  bool stagnated = false;  // the round-off floor ended the last iterations
+  double merit0 = 0;                    // the initial scaled residual
+  bool stagnated = false;               // the round-off floor ended the last iterations
 };
 
 NewtonSolver::Run::Run(NewtonSolver& solver, NonlinearProblem& problem)
@@ -407,9 +410,9 @@ std::optional<NewtonReport> NewtonSolver::Run::not_finite(const std::vector<doub
                                                           const std::string& what) {
   const int b = non_finite_block(block_values);
   if (b < 0) return std::nullopt;
-  return finish(NewtonOutcome::Diverged, message(what, " of block '", report.blocks[b], "' is not finite (",
-                                                 std::isnan(block_values[b]) ? "its norm is not a number"
-                                                                             : "its norm overflows", ")"));
+  return finish(NewtonOutcome::Diverged,
+                message(what, " of block '", report.blocks[b], "' is not finite (",
+                        std::isnan(block_values[b]) ? "its norm is not a number" : "its norm overflows", ")"));
 }
 
 std::optional<NewtonReport> NewtonSolver::Run::judge_initial_state() {
@@ -448,8 +451,7 @@ IterationState NewtonSolver::Run::start_iterations(System& system, const std::ve
   // Growth past this is divergence. On the contact dofs the first residual is that of the interior
   // solved exactly, which can be far larger than the whole system's first (the paper's strip from rest,
   // its potential not yet in equilibrium: 570 against 8e-6 in v): growth counts from the larger.
-  state.divergence_bound =
-      options.divergence_factor * std::max({merit0, merit(state.norms, test->reference()), 1.0});
+  state.divergence_bound = options.divergence_factor * std::max({merit0, merit(state.norms, test->reference()), 1.0});
   state.watchdog = options.line_search && options.watchdog > 0;
   if (state.watchdog) state.best = system.free_values();
   state.best_merit = merit(state.norms, test->reference());
@@ -504,9 +506,9 @@ LineSearchStep NewtonSolver::Run::line_search(System& system, const std::vector<
     system.assemble();
     taken.norms = block_norms(space, system.residual());
     const double m = merit(taken.norms, test->reference());
-    const bool accept = !options.line_search ||
-                        (armijo ? std::isfinite(m) && m <= (1 - 2 * options.armijo * taken.alpha) * merit_before
-                                : std::isfinite(m) && m <= divergence_bound);
+    const bool accept =
+        !options.line_search || (armijo ? std::isfinite(m) && m <= (1 - 2 * options.armijo * taken.alpha) * merit_before
+                                        : std::isfinite(m) && m <= divergence_bound);
     if (accept || taken.backtracks >= options.max_backtracks) break;
     taken.alpha *= options.backtrack_factor;
     ++taken.backtracks;
@@ -541,9 +543,9 @@ std::optional<Ending> NewtonSolver::Run::stop(System& system, const std::vector<
   }
   const double m = merit(norms, test->reference());
   if (m > state.divergence_bound)
-    return Ending{finish(NewtonOutcome::Diverged, message("iteration ", iteration,
-                                                          ": the scaled residual grew by more than ",
-                                                          options.divergence_factor))};
+    return Ending{finish(
+        NewtonOutcome::Diverged,
+        message("iteration ", iteration, ": the scaled residual grew by more than ", options.divergence_factor))};
   if (m <= (1 - 2 * options.armijo) * state.best_merit) {
     state.best_merit = m;
     if (state.watchdog) state.best = system.free_values();

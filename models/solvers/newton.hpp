@@ -11,11 +11,11 @@
 #include "assembly/linear_solver.hpp"
 #include "models/solvers/condensed_solve.hpp"
 #include "models/solvers/krylov_solve.hpp"
-#include "models/solvers/linear_strategy.hpp"
-#include "models/solvers/strategy_cost_model.hpp"
 #include "models/solvers/linear_solve_cost.hpp"
+#include "models/solvers/linear_strategy.hpp"
 #include "models/solvers/nonlinear_problem.hpp"
 #include "models/solvers/reduced_contact_system.hpp"
+#include "models/solvers/strategy_cost_model.hpp"
 
 namespace pc {
 
@@ -108,9 +108,9 @@ struct NewtonReport : LinearSolveCost {
   // The part of assembly_seconds the problem spent on the Jacobian (NonlinearProblem::jacobian_assembly_seconds);
   // the rest is the residual's.
   double jacobian_seconds = 0;
-  bool condensed = false;  // whether a condensed or Krylov step was used
+  bool condensed = false;                          // whether a condensed or Krylov step was used
   LinearStrategy strategy = LinearStrategy::Full;  // of the last iteration
-  int krylov_iterations = 0;                        // GMRES iterations, over the solve
+  int krylov_iterations = 0;                       // GMRES iterations, over the solve
   // Of `iterations`, those made on the contact dofs alone (NewtonOptions::contact_newton); the rest, if any,
   // on the whole system after them.
   int contact_iterations = 0;

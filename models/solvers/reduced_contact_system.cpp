@@ -17,8 +17,12 @@ std::unique_ptr<ReducedContactSystem> ReducedContactSystem::reduce(NonlinearProb
 }
 
 ReducedContactSystem::ReducedContactSystem(NonlinearProblem& problem, CondensedSolve& condensed)
-    : problem_(problem), condensed_(condensed), contact_(problem.nonlinear_dofs()), x0_(problem.free_values()),
-      b_(-problem.residual()), shift_(Eigen::VectorXd::Zero(Eigen::Index(contact_.size()))) {
+    : problem_(problem),
+      condensed_(condensed),
+      contact_(problem.nonlinear_dofs()),
+      x0_(problem.free_values()),
+      b_(-problem.residual()),
+      shift_(Eigen::VectorXd::Zero(Eigen::Index(contact_.size()))) {
   // The contact dofs are sorted and each block is a range of the free values: a block's contact dofs are
   // a range of x_c.
   size_t next = 0;

@@ -56,7 +56,7 @@ class ReducedContactSystem {
 
   NonlinearProblem& problem_;
   CondensedSolve& condensed_;
-  std::vector<int> contact_;    // the nonlinear dofs, sorted
+  std::vector<int> contact_;  // the nonlinear dofs, sorted
   std::vector<ProblemBlock> blocks_;
   Eigen::VectorXd x0_;          // the whole free values at the reduction
   Eigen::VectorXd b_;           // -R(x0), the reduced and expanded right-hand side

@@ -28,7 +28,13 @@ constexpr double kFillWithoutEstimate = 8.0;
 // Three significant digits in the unit that suits.
 std::string seconds(double s) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g %s", s < 1e-3 ? s * 1e6 : s < 1 ? s * 1e3 : s, s < 1e-3 ? "us" : s < 1 ? "ms" : "s");
+  std::snprintf(text, sizeof text, "%.3g %s",
+                s < 1e-3 ? s * 1e6
+                : s < 1  ? s * 1e3
+                         : s,
+                s < 1e-3 ? "us"
+                : s < 1  ? "ms"
+                         : "s");
   return text;
 }
 
@@ -58,11 +64,12 @@ StrategyCosts predict_strategy_costs(const StrategyCostInputs& in) {
   // Krylov, never worse than about a factorisation per iteration (it backs off to direct steps where the
   // contact state moves too fast), stands for the full path too.
   c.choice = fits && c.schur_seconds <= std::min(c.krylov_seconds, c.full_seconds) ? LinearStrategy::Schur
-                                                                                    : LinearStrategy::Krylov;
-  c.explanation = message("condensation auto: ", static_cast<long>(m), " contact dofs of ", static_cast<long>(in.dofs),
-                          "; predicted per Newton iteration full ", seconds(c.full_seconds), ", schur ", seconds(c.schur_seconds), " (dense S_c^-1 ",
-                          mebibytes(c.schur_bytes), " MiB", fits ? "" : ", over the memory budget", "), krylov ",
-                          seconds(c.krylov_seconds), ": ", to_string(c.choice));
+                                                                                   : LinearStrategy::Krylov;
+  c.explanation =
+      message("condensation auto: ", static_cast<long>(m), " contact dofs of ", static_cast<long>(in.dofs),
+              "; predicted per Newton iteration full ", seconds(c.full_seconds), ", schur ", seconds(c.schur_seconds),
+              " (dense S_c^-1 ", mebibytes(c.schur_bytes), " MiB", fits ? "" : ", over the memory budget", "), krylov ",
+              seconds(c.krylov_seconds), ": ", to_string(c.choice));
   return c;
 }
 

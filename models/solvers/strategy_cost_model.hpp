@@ -21,7 +21,7 @@ namespace pc {
 
 struct StrategyCostInputs {
   double dofs = 0, nonlinear_dofs = 0, jacobian_nonzeros = 0;
-  FactorEstimate factors;        // of J's pattern (entries 0: estimated from the Jacobian's nonzeros)
+  FactorEstimate factors;          // of J's pattern (entries 0: estimated from the Jacobian's nonzeros)
   double memory_budget_bytes = 0;  // for the dense matrices (0: no limit)
 };
 

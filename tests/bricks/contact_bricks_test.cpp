@@ -25,8 +25,8 @@
 #include "bricks/contact_status.hpp"
 #include "bricks/friction_brick.hpp"
 #include "bricks/law_registry.hpp"
-#include "bricks/laws/foundation_laws.hpp"
 #include "bricks/laws/direction.hpp"
+#include "bricks/laws/foundation_laws.hpp"
 #include "bricks/laws/friction_laws.hpp"
 #include "bricks/laws/law_parameters.hpp"
 #include "bricks/laws/normal_laws.hpp"
@@ -100,8 +100,7 @@ std::map<std::string, Eigen::VectorXd> residuals(const Brick& brick, const Conta
     TermAssembly assembly(bt.term, bt.region, spaces);
     std::vector<Eigen::VectorXd*> targets;
     for (int t : bt.term->tests()) {
-      auto [it, inserted] =
-          out.try_emplace(bt.term->fields()[t].name, Eigen::VectorXd::Zero(spaces[t]->num_dofs()));
+      auto [it, inserted] = out.try_emplace(bt.term->fields()[t].name, Eigen::VectorXd::Zero(spaces[t]->num_dofs()));
       targets.push_back(&it->second);
     }
     assembly.assemble(values, 0.0, targets, false);
@@ -110,8 +109,7 @@ std::map<std::string, Eigen::VectorXd> residuals(const Brick& brick, const Conta
 }
 
 // The model constants of the given laws' parameters (law_values), as a Model would hold them.
-template <class... Laws>
-ConstantTable constants_of(const Laws&... laws) {
+template <class... Laws> ConstantTable constants_of(const Laws&... laws) {
   ConstantTable data;
   auto add = [&data](const ParameterValues& values) {
     for (const auto& [name, value] : values) data.set(name, value);
@@ -121,8 +119,7 @@ ConstantTable constants_of(const Laws&... laws) {
 }
 
 // A brick built, then updated from the model's constants (which is where it reads its parameters).
-template <class B, class... Args>
-std::shared_ptr<B> updated(const DataView& data, Args&&... args) {
+template <class B, class... Args> std::shared_ptr<B> updated(const DataView& data, Args&&... args) {
   auto brick = std::make_shared<B>(std::forward<Args>(args)...);
   brick->update(data);
   return brick;
@@ -410,8 +407,7 @@ TEST(FrictionBrick, TangentMatchesFiniteDifferences) {
     expect_check_brick_passes(coulomb, coulomb_data, c);
     EXPECT_GT(residual_size(coulomb, c, pressed, "v"), 0.0) << c.label;
 
-    const ConstantTable compliance_data =
-        constants_of(RegularizedCoulomb{0.3, eps}, NormalCompliance{1e9, 2.0, 0.01});
+    const ConstantTable compliance_data = constants_of(RegularizedCoulomb{0.3, eps}, NormalCompliance{1e9, 2.0, 0.01});
     const auto compliance = updated<NormalResponseBrick<NormalCompliance>>(compliance_data, c.side);
     FrictionBrick<RegularizedCoulomb> on_compliance(c.side, compliance);
     expect_check_brick_passes(on_compliance, compliance_data, c);
@@ -431,11 +427,16 @@ struct TanhCoulomb {
   double mu = 0.3, eps = 0.1, pressure_slope = 1.0;
   static constexpr bool dissipative = true;
   static constexpr bool uses_normal_pressure = true;
-  template <class S>
-  void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& normal_pressure, S* out) const {
     const S p = chain_rule(normal_pressure, value_of(normal_pressure), pressure_slope);
     const double e = eps;
-    scaled_direction(r, dim, [e](const auto& rho) { using std::tanh; return tanh(rho / e); }, out);
+    scaled_direction(
+        r, dim,
+        [e](const auto& rho) {
+          using std::tanh;
+          return tanh(rho / e);
+        },
+        out);
     for (int i = 0; i < dim; ++i) out[i] *= mu * p;
   }
 };
@@ -534,8 +535,8 @@ TEST(ConductiveFoundationBrick, DeclaresFieldsAndTraitsFromTheLaw) {
   const ConstantTable compliance_data =
       constants_of(PressureActivatedConductance{kKe, kPhiF, 1e6}, NormalCompliance{1e9, 1.0, 0.0});
   const auto compliance = updated<NormalResponseBrick<NormalCompliance>>(compliance_data, "contact");
-  const auto on_u = updated<ConductiveFoundationBrick<PressureActivatedConductance>>(compliance_data, "contact",
-                                                                                     compliance);
+  const auto on_u =
+      updated<ConductiveFoundationBrick<PressureActivatedConductance>>(compliance_data, "contact", compliance);
   EXPECT_EQ(on_u->terms()[0].term->fields()[1].name, "u");
 }
 
@@ -568,21 +569,18 @@ TEST(ConductiveFoundationBrick, TangentMatchesFiniteDifferences) {
 // A user's quick laws: no parameters(), so the bricks hold them by value and read no model constants.
 struct UserDampedResponse {
   double c_nu;
-  template <class S>
-  S operator()(const S& r) const { return r < 0.0 ? S(0.0) : c_nu * r; }
+  template <class S> S operator()(const S& r) const { return r < 0.0 ? S(0.0) : c_nu * r; }
 };
 struct UserCoulomb {
   double mu, eps;
   static constexpr bool uses_normal_pressure = true;
-  template <class S>
-  void operator()(const S* r, int dim, const S& p, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& p, S* out) const {
     RegularizedCoulomb{mu, eps}(r, dim, p, out);
   }
 };
 struct UserFoundation {
   double k_e, phi_f;
-  template <class S>
-  S operator()(const S& phi, const S&) const { return k_e * (phi - phi_f); }
+  template <class S> S operator()(const S& phi, const S&) const { return k_e * (phi - phi_f); }
 };
 
 TEST(ContactBricks, LawsWithoutDeclaredParametersKeepTheirValues) {
@@ -597,8 +595,8 @@ TEST(ContactBricks, LawsWithoutDeclaredParametersKeepTheirValues) {
     EXPECT_TRUE(foundation.data().empty());
 
     // The same residuals as the library's laws with these values read from the model.
-    const ConstantTable data = constants_of(LinearDampedResponse{kCNu}, RegularizedCoulomb{mu, eps},
-                                            LinearConductance{kKe, kPhiF});
+    const ConstantTable data =
+        constants_of(LinearDampedResponse{kCNu}, RegularizedCoulomb{mu, eps}, LinearConductance{kKe, kPhiF});
     const auto library_normal = updated<NormalResponseBrick<LinearDampedResponse>>(data, c.side);
     const auto library_friction = updated<FrictionBrick<RegularizedCoulomb>>(data, c.side, library_normal);
     const auto library_foundation = updated<ConductiveFoundationBrick<LinearConductance>>(data, c.side);
@@ -733,9 +731,8 @@ TEST(LawRegistries, FactoriesMakeTheBricksBuiltByHand) {
   for (const ContactCase& c : contact_cases()) {
     const ContactSurface surface{c.side, {}, {}};
     const State state = c.uniform(0.3 * c.normal + 0.4 * c.tangent, 0.05 * c.normal, 2.0);
-    const ConstantTable data =
-        constants_of(LinearDampedResponse{kCNu}, RegularizedCoulomb{mu, eps}, ViscousFriction{kCTau},
-                     PressureActivatedConductance{kKe, kPhiF, 1e11});
+    const ConstantTable data = constants_of(LinearDampedResponse{kCNu}, RegularizedCoulomb{mu, eps},
+                                            ViscousFriction{kCTau}, PressureActivatedConductance{kKe, kPhiF, 1e11});
     const std::string label = c.label + ": ";
 
     // Normal laws.
@@ -749,8 +746,8 @@ TEST(LawRegistries, FactoriesMakeTheBricksBuiltByHand) {
     const ConstantTable power_data = constants_of(PowerDampedResponse{kCNu, 2.0});
     const auto power = normal_law_registry().at("power_damped", "test").create(surface);
     power->update(power_data);
-    expect_same_residual(*power, *updated<NormalResponseBrick<PowerDampedResponse>>(power_data, c.side), c, state,
-                         "v", label + "power_damped");
+    expect_same_residual(*power, *updated<NormalResponseBrick<PowerDampedResponse>>(power_data, c.side), c, state, "v",
+                         label + "power_damped");
 
     const ConstantTable compliance_data = constants_of(NormalCompliance{1e9, 1.5, 0.01});
     const auto compliance = normal_law_registry().at("normal_compliance", "test").create(surface);
@@ -764,8 +761,8 @@ TEST(LawRegistries, FactoriesMakeTheBricksBuiltByHand) {
     const auto coulomb = friction_law_registry().at("coulomb", "test").create(surface, normal);
     ASSERT_NE(coulomb, nullptr);
     coulomb->update(data);
-    expect_same_residual(*coulomb, *updated<FrictionBrick<RegularizedCoulomb>>(data, c.side, normal_by_hand), c,
-                         state, "v", label + "coulomb");
+    expect_same_residual(*coulomb, *updated<FrictionBrick<RegularizedCoulomb>>(data, c.side, normal_by_hand), c, state,
+                         "v", label + "coulomb");
     // A law that reads no pressure ignores the normal brick it is offered.
     const auto viscous = friction_law_registry().at("viscous", "test").create(surface, normal);
     ASSERT_NE(viscous, nullptr);
@@ -788,9 +785,8 @@ TEST(LawRegistries, FactoriesMakeTheBricksBuiltByHand) {
     const auto activated = foundation_law_registry().at("pressure_activated", "test").create(surface, normal);
     activated->update(data);
     expect_same_residual(
-        *activated,
-        *updated<ConductiveFoundationBrick<PressureActivatedConductance>>(data, c.side, normal_by_hand), c, state,
-        "phi", label + "pressure_activated");
+        *activated, *updated<ConductiveFoundationBrick<PressureActivatedConductance>>(data, c.side, normal_by_hand), c,
+        state, "phi", label + "pressure_activated");
   }
 }
 
@@ -808,16 +804,14 @@ TEST(LawRegistries, FactoriesReadRenamedConstants) {
 // The paper's electric contact term written by a user as a kernel.
 struct UserConductance {
   double k_e, phi_f;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     out.f0[0][0] = k_e * (in.value[0][0] - phi_f);
   }
 };
 
 // A nonlinear bulk term coupling both unknowns: f0_v = |v|^2 v + phi v, f1_phi = (1 + phi^2) grad phi.
 struct NonlinearBulk {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     S speed2 = 0;
     for (int d = 0; d < in.dim; ++d) speed2 += in.value[0][d] * in.value[0][d];
     const S phi = in.value[1][0];
@@ -830,9 +824,14 @@ struct NonlinearBulk {
 
 TEST(WeakFormBrick, UserKernelReproducesTheConductiveFoundation) {
   for (const ContactCase& c : contact_cases()) {
-    WeakFormBrick user(WeakForm{.name = "user conductance", .fields = {{"phi"}}, .tests = {"phi"},
-                                .couplings = {{"phi", "phi"}}, .region = c.side, .integration = Integration::Faces,
-                                .linear = true, .symmetric = true},
+    WeakFormBrick user(WeakForm{.name = "user conductance",
+                                .fields = {{"phi"}},
+                                .tests = {"phi"},
+                                .couplings = {{"phi", "phi"}},
+                                .region = c.side,
+                                .integration = Integration::Faces,
+                                .linear = true,
+                                .symmetric = true},
                        UserConductance{kKe, kPhiF});
     ConductiveFoundationBrick<LinearConductance> library(c.side);
     library.update(constants_of(LinearConductance{kKe, kPhiF}));
@@ -848,7 +847,9 @@ TEST(WeakFormBrick, UserKernelReproducesTheConductiveFoundation) {
 }
 
 TEST(WeakFormBrick, NonlinearBulkKernelHasAConsistentTangent) {
-  const WeakForm form{.name = "nonlinear bulk", .fields = {{"v"}, {"phi", true}}, .tests = {"v", "phi"},
+  const WeakForm form{.name = "nonlinear bulk",
+                      .fields = {{"v"}, {"phi", true}},
+                      .tests = {"v", "phi"},
                       .couplings = {{"v", "v"}, {"v", "phi"}, {"phi", "phi"}}};
   for (const ContactCase& c : contact_cases()) {
     WeakFormBrick brick(form, NonlinearBulk{});
@@ -872,10 +873,10 @@ TEST(WeakFormBrick, RejectsFieldsItDoesNotRead) {
     EXPECT_NE(std::string(e.what()).find("'w'"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("broken"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(WeakFormBrick(WeakForm{.name = "broken", .fields = {{"v"}, {"phi"}}, .tests = {"v"},
-                                      .couplings = {{"phi", "v"}}},
-                             NonlinearBulk{}),
-               Error);
+  EXPECT_THROW(
+      WeakFormBrick(WeakForm{.name = "broken", .fields = {{"v"}, {"phi"}}, .tests = {"v"}, .couplings = {{"phi", "v"}}},
+                    NonlinearBulk{}),
+      Error);
 }
 
 }  // namespace

@@ -25,9 +25,8 @@ std::shared_ptr<const Mesh> quarter_annulus(int n) {
     xy.push_back(r * std::sin(theta));
   }
   auto mesh = std::make_shared<Mesh>(2, Shape::Triangle, xy, square.connectivity());
-  mesh->add_boundary_region_where("inner", [](std::span<const double> x) {
-    return std::abs(std::hypot(x[0], x[1]) - 1) < 1e-12;
-  });
+  mesh->add_boundary_region_where(
+      "inner", [](std::span<const double> x) { return std::abs(std::hypot(x[0], x[1]) - 1) < 1e-12; });
   return mesh;
 }
 

@@ -71,9 +71,8 @@ TEST(NormalLaws, PassTheChecker) {
   // r_+^m with 1 < m < 2 has an unbounded second derivative at 0: the kink is checked by right-sided
   // quotients that converge as h^(m-1).
   for (double m : {1.0, 1.5, 2.0, 2.5, 3.0}) {
-    const auto report = check_scalar_law(
-        PowerDampedResponse{1e12, m},
-        {.name = message("PowerDampedResponse m = ", m), .extremes = {1e-300, 1e-12, 1e12, 1e90}});
+    const auto report = check_scalar_law(PowerDampedResponse{1e12, m}, {.name = message("PowerDampedResponse m = ", m),
+                                                                        .extremes = {1e-300, 1e-12, 1e12, 1e90}});
     EXPECT_TRUE(report.ok()) << report;
   }
   const auto compliance = check_scalar_law(NormalCompliance{1e9, 2.0, 0.1},
@@ -148,8 +147,7 @@ TEST(FrictionLaws, ClosedForms) {
 
 // ---- the direction term g(|r|) r / |r| ------------------------------------------------------------------
 
-template <int N>
-bool all_finite(const Dual<N>* x, int n) {
+template <int N> bool all_finite(const Dual<N>* x, int n) {
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(x[i].v)) return false;
     for (double d : x[i].d)
@@ -161,7 +159,10 @@ bool all_finite(const Dual<N>* x, int n) {
 TEST(Direction, ScaledDirectionIsSafeAtZeroTinyAndHuge) {
   using D = Dual<3>;
   const double eps = 0.1;
-  const auto tanh_of = [eps](const auto& rho) { using std::tanh; return tanh(rho / eps); };
+  const auto tanh_of = [eps](const auto& rho) {
+    using std::tanh;
+    return tanh(rho / eps);
+  };
   for (const int dim : {2, 3}) {
     // r = 0: the limit g'(0) r, with the derivative g'(0) I = I / eps.
     D zero[3] = {D::variable(0.0, 0), D::variable(0.0, 1), D::variable(0.0, 2)};
@@ -248,8 +249,7 @@ struct ExpectedParameter {
   std::optional<double> default_value;
 };
 
-template <class Law>
-void expect_declarations(const std::string& law, const std::vector<ExpectedParameter>& expected) {
+template <class Law> void expect_declarations(const std::string& law, const std::vector<ExpectedParameter>& expected) {
   const std::vector<ParameterDeclaration> declared = parameter_declarations<Law>();
   ASSERT_EQ(declared.size(), expected.size()) << law;
   for (size_t i = 0; i < expected.size(); ++i) {
@@ -310,9 +310,13 @@ TEST(Laws, ValuesByParameterName) {
 constexpr double kCNu = 1e12;
 
 template <class Law>
-concept ScalarLaw = requires(const Law& law) { law(0.0); };
+concept ScalarLaw = requires(const Law& law) {
+  law(0.0);
+};
 template <class Law>
-concept FoundationLaw = requires(const Law& law) { law(0.0, 0.0); };
+concept FoundationLaw = requires(const Law& law) {
+  law(0.0, 0.0);
+};
 
 // The brick that reads a law's parameters, with the normal brick it is paired with (if the law reads the
 // contact pressure): a LinearDampedResponse reading c_nu.
@@ -321,8 +325,7 @@ struct BricksOfLaw {
   std::shared_ptr<Brick> normal;
 };
 
-template <class Law>
-BricksOfLaw bricks_of_law(const ParameterNames& names) {
+template <class Law> BricksOfLaw bricks_of_law(const ParameterNames& names) {
   if constexpr (ScalarLaw<Law>) {
     return {std::make_shared<NormalResponseBrick<Law>>("contact", ContactFields{}, names), nullptr};
   } else {
@@ -336,8 +339,7 @@ BricksOfLaw bricks_of_law(const ParameterNames& names) {
 }
 
 // The model constants holding the law's values under `names` (and c_nu for a paired normal brick).
-template <class Law>
-ConstantTable constants_of(const Law& law, const ParameterNames& names, bool paired) {
+template <class Law> ConstantTable constants_of(const Law& law, const ParameterNames& names, bool paired) {
   ConstantTable data;
   for (const auto& [parameter, value] : law_values(law)) data.set(names(parameter), value);
   if (paired) data.set("c_nu", kCNu);
@@ -346,8 +348,7 @@ ConstantTable constants_of(const Law& law, const ParameterNames& names, bool pai
 
 // The brick's update() throws pc::Error whose message names the brick, the parameter, the model constant
 // and the value: under the parameter's own name, and renamed (the constant then differs from the parameter).
-template <class Law>
-void expect_rejected(const Law& law, const std::string& parameter, const std::string& value) {
+template <class Law> void expect_rejected(const Law& law, const std::string& parameter, const std::string& value) {
   for (const bool renamed : {false, true}) {
     const std::string constant = renamed ? parameter + "_left" : parameter;
     ParameterNames names;
@@ -369,8 +370,7 @@ void expect_rejected(const Law& law, const std::string& parameter, const std::st
   }
 }
 
-template <class Law>
-void expect_accepted(const Law& law) {
+template <class Law> void expect_accepted(const Law& law) {
   const BricksOfLaw b = bricks_of_law<Law>({});
   const ConstantTable data = constants_of(law, {}, b.normal != nullptr);
   if (b.normal) {
@@ -416,45 +416,38 @@ TEST(Laws, AMissingConstantIsNamed) {
 
 // Loses its derivative: the value goes through a plain double.
 struct DetachedDerivative {
-  template <class S>
-  S operator()(const S& r) const {
+  template <class S> S operator()(const S& r) const {
     const double x = value_of(r);
     return S(x * x);
   }
 };
 struct FalselyAffine {
   static constexpr bool affine = true;
-  template <class S>
-  S operator()(const S& r) const { return r * r; }
+  template <class S> S operator()(const S& r) const { return r * r; }
 };
 struct FalselyDissipative {
   static constexpr bool dissipative = true;
-  template <class S>
-  S operator()(const S& r) const { return -2.0 * r; }
+  template <class S> S operator()(const S& r) const { return -2.0 * r; }
 };
 struct Overflowing {
-  template <class S>
-  S operator()(const S& r) const {
+  template <class S> S operator()(const S& r) const {
     using std::exp;
     return exp(r);
   }
 };
 // Right-sided at the kink is the library's rule; this law takes the left-sided derivative there.
 struct LeftSidedKink {
-  template <class S>
-  S operator()(const S& r) const { return r <= 0.0 ? S(0.0) : r; }
+  template <class S> S operator()(const S& r) const { return r <= 0.0 ? S(0.0) : r; }
 };
 // A Coulomb law that forgets the derivative in the pressure.
 struct PressureBlindCoulomb {
-  template <class S>
-  void operator()(const S* r, int dim, const S& p, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& p, S* out) const {
     for (int d = 0; d < dim; ++d) out[d] = value_of(p) * r[d];
   }
 };
 struct NonMonotoneFoundation {
   static constexpr bool dissipative = true;
-  template <class S>
-  S operator()(const S& phi, const S&) const { return -phi; }
+  template <class S> S operator()(const S& phi, const S&) const { return -phi; }
 };
 
 TEST(LawChecker, CatchesEachBrokenRule) {
@@ -484,16 +477,14 @@ TEST(LawChecker, CatchesEachBrokenRule) {
 // converge to the derivative 0 only as h^0.5.
 struct ThreeHalvesResponse {
   static constexpr bool dissipative = true;
-  template <class S>
-  S operator()(const S& r) const {
+  template <class S> S operator()(const S& r) const {
     using std::pow;
     return r < 0.0 ? S(0.0) : 2.0 * pow(r, 1.5);
   }
 };
 // c r_+ reporting 1.01 c at the kink: a wrong right-sided derivative.
 struct KinkSlopeOff {
-  template <class S>
-  S operator()(const S& r) const {
+  template <class S> S operator()(const S& r) const {
     if (r < 0.0) return S(0.0);
     if (value_of(r) == 0.0) return chain_rule(r, 0.0, 1.01 * 3.0);
     return 3.0 * r;
@@ -501,8 +492,7 @@ struct KinkSlopeOff {
 };
 // c r_+^1.5 reporting the slope 1 at the kink instead of 0.
 struct ThreeHalvesWrongAtKink {
-  template <class S>
-  S operator()(const S& r) const {
+  template <class S> S operator()(const S& r) const {
     using std::pow;
     if (r < 0.0) return S(0.0);
     if (value_of(r) == 0.0) return chain_rule(r, 0.0, 1.0);
@@ -516,11 +506,12 @@ TEST(LawChecker, AcceptsAC1LawWithAnUnboundedSecondDerivativeAtItsKink) {
   EXPECT_TRUE(user.ok()) << user;
   for (double m : {1.25, 1.5, 1.75}) {
     const auto library = check_scalar_law(PowerDampedResponse{1e12, m}, {.name = message("PowerDampedResponse m = ", m),
-                                                                        .extremes = {1e-300, 1e-12, 1e12, 1e90}});
+                                                                         .extremes = {1e-300, 1e-12, 1e12, 1e90}});
     EXPECT_TRUE(library.ok()) << library;
   }
-  const auto compliance = check_scalar_law(NormalCompliance{1e9, 1.5, 0.1},
-                                           {.name = "NormalCompliance m = 1.5", .kinks = {0.1}, .extremes = {1e-300, 1e140}});
+  const auto compliance =
+      check_scalar_law(NormalCompliance{1e9, 1.5, 0.1},
+                       {.name = "NormalCompliance m = 1.5", .kinks = {0.1}, .extremes = {1e-300, 1e140}});
   EXPECT_TRUE(compliance.ok()) << compliance;
 }
 
@@ -543,8 +534,7 @@ struct NaiveCoulomb {
   double mu = 0.3, eps = 1e-6;
   static constexpr bool dissipative = true;
   static constexpr bool uses_normal_pressure = true;
-  template <class S>
-  void operator()(const S* r, int dim, const S& p, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& p, S* out) const {
     using std::sqrt;
     S sum = 1.0;
     for (int i = 0; i < dim; ++i) sum += (r[i] / eps) * (r[i] / eps);
@@ -557,15 +547,17 @@ struct NaiveCoulomb {
 struct FallingFriction {
   static constexpr bool dissipative = true;
   static constexpr bool monotone = true;
-  template <class S>
-  void operator()(const S* r, int dim, const S& /*p*/, S* out) const {
+  template <class S> void operator()(const S* r, int dim, const S& /*p*/, S* out) const {
     const double eps = 0.5;
-    scaled_direction(r, dim, [eps](const auto& rho) {
-      using T = std::decay_t<decltype(rho)>;
-      if (rho <= eps) return T(rho / eps);
-      if (rho <= 1e6) return T(1.0 + 0.0 * rho);
-      return T(1e6 / rho);
-    }, out);
+    scaled_direction(
+        r, dim,
+        [eps](const auto& rho) {
+          using T = std::decay_t<decltype(rho)>;
+          if (rho <= eps) return T(rho / eps);
+          if (rho <= 1e6) return T(1.0 + 0.0 * rho);
+          return T(1e6 / rho);
+        },
+        out);
   }
 };
 
@@ -594,8 +586,7 @@ TEST(LawChecker, CatchesAFrictionLawThatCollapsesAtLargeSpeeds) {
 // What a user writes for a law of their own: the law and a five-line test.
 struct QuadraticResponse {
   static constexpr bool dissipative = true;
-  template <class S>
-  S operator()(const S& r) const { return r < 0.0 ? S(0.0) : 4.0 * r * r; }
+  template <class S> S operator()(const S& r) const { return r < 0.0 ? S(0.0) : 4.0 * r * r; }
 };
 
 TEST(LawChecker, AUserLawInFiveLines) {

@@ -116,7 +116,6 @@ Evaluation evaluate(const Brick& brick, const BrickCheckSetup& setup, const Stat
   return out;
 }
 
-
 double max_abs(const Eigen::MatrixXd& M) { return M.size() ? M.cwiseAbs().maxCoeff() : 0.0; }
 
 // The harness checks the tangent against finite differences, the linear claim (constant tangent,
@@ -203,7 +202,8 @@ TEST(LinearBricks, RigidMotionsCostNoElasticOrViscousForce) {
         for (int j = 0; j < dim; ++j) out[i] += W(i, j) * x[j];
       }
     });
-    const double scale = max_abs(evaluate(elasticity, c.setup, {}).tangent.at({"v", "u"})) * rigid.cwiseAbs().maxCoeff();
+    const double scale =
+        max_abs(evaluate(elasticity, c.setup, {}).tangent.at({"v", "u"})) * rigid.cwiseAbs().maxCoeff();
     EXPECT_LT(max_abs(evaluate(elasticity, c.setup, {{"u", rigid}}).residual.at("v")), 1e-13 * scale);
     EXPECT_LT(max_abs(evaluate(viscosity, c.setup, {{"v", rigid}}).residual.at("v")), 1e-13 * scale);
   }
@@ -215,8 +215,10 @@ struct Side {
 };
 
 std::vector<Side> sides(int dim) {
-  std::vector<Side> all = {{"xmin", -Eigen::Vector3d::UnitX()}, {"xmax", Eigen::Vector3d::UnitX()},
-                           {"ymin", -Eigen::Vector3d::UnitY()}, {"ymax", Eigen::Vector3d::UnitY()}};
+  std::vector<Side> all = {{"xmin", -Eigen::Vector3d::UnitX()},
+                           {"xmax", Eigen::Vector3d::UnitX()},
+                           {"ymin", -Eigen::Vector3d::UnitY()},
+                           {"ymax", Eigen::Vector3d::UnitY()}};
   if (dim == 3) {
     all.push_back({"zmin", -Eigen::Vector3d::UnitZ()});
     all.push_back({"zmax", Eigen::Vector3d::UnitZ()});
@@ -301,8 +303,7 @@ TEST(LinearBricks, UniformFieldsAreBalancedByTheirBoundaryLoads) {
     piezo.update(data);
     const Eigen::MatrixXd E = data.constant("E");
     const Evaluation r_piezo = evaluate(piezo, c.setup, {{"phi", phi}, {"u", u}});
-    const Eigen::VectorXd load_piezo_v =
-        boundary_traction_residual(c.setup, stress_tensor(dim, E.transpose() * gd));
+    const Eigen::VectorXd load_piezo_v = boundary_traction_residual(c.setup, stress_tensor(dim, E.transpose() * gd));
     EXPECT_LT(max_abs(r_piezo.residual.at("v") + load_piezo_v), 1e-12 * max_abs(load_piezo_v)) << "piezo, v rows";
     Eigen::Vector3d D = Eigen::Vector3d::Zero();
     D.head(dim) = E * eps;

@@ -129,8 +129,9 @@ TEST(PiezoMaterials, PlaneStrainKeepsTheInPlaneRowsAndColumnsAndRefusesPolingOut
   EXPECT_EQ(x.B, B);
   EXPECT_EQ(x.E, E);
   EXPECT_EQ(x.beta, beta);
-  EXPECT_EQ(error_of([&] { m.tensors(2, Axis::z); }),
-            "piezoelectric material preset: a 2D (plane strain, x-y) model is poled in its plane (x or y), not along z");
+  EXPECT_EQ(
+      error_of([&] { m.tensors(2, Axis::z); }),
+      "piezoelectric material preset: a 2D (plane strain, x-y) model is poled in its plane (x or y), not along z");
   EXPECT_EQ(error_of([&] { plane_strain_stiffness(y.B); }),
             "plane_strain_stiffness: expects a 3D tensor (6 x 6), got 3 x 3");
   EXPECT_EQ(error_of([] { axis_from_name("w", "scene: 'material.poling'"); }),
@@ -199,8 +200,8 @@ TEST(PiezoMaterials, TheStressChargeConstantsAreTheConversionOfTheSourcesStrainC
             continue;
           }
           EXPECT_NEAR(converted(r, col) / stored(r, col), 1.0, k.tolerance)
-              << k.name << " " << what << " (" << r << ", " << col << "): stored " << stored(r, col)
-              << ", converted " << converted(r, col);
+              << k.name << " " << what << " (" << r << ", " << col << "): stored " << stored(r, col) << ", converted "
+              << converted(r, col);
         }
     };
     expect_close(m.c, c, "c^E");

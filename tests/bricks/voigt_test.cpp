@@ -222,10 +222,9 @@ TEST(Voigt, RotationPreservesEigenvalues) {
 TEST(Voigt, RotationsRejectNonRotationsAndWrongSizes) {
   EXPECT_CONTAINS(error_of([] { rotate_stiffness(orthotropic_stiffness(), 2 * Eigen::Matrix3d::Identity()); }),
                   "not orthogonal");
-  EXPECT_CONTAINS(error_of([] {
-                    rotate_permittivity(Eigen::MatrixXd::Identity(3, 3), Eigen::Vector3d(1, 1, -1).asDiagonal());
-                  }),
-                  "reflection");
+  EXPECT_CONTAINS(
+      error_of([] { rotate_permittivity(Eigen::MatrixXd::Identity(3, 3), Eigen::Vector3d(1, 1, -1).asDiagonal()); }),
+      "reflection");
   EXPECT_CONTAINS(error_of([] { rotate_stiffness(isotropic_stiffness(2, 1, 1), Eigen::Matrix3d::Identity()); }),
                   "3D tensors");
 }

@@ -30,10 +30,10 @@ TEST(BlasVectorForwarding, OneColumnProductsAreTheDefinitionsProducts) {
   for (const char* transa : {"N", "T", "n", "t"})
     for (const char* transb : {"N", "T"}) {
       const bool a_transposed = *transa == 'T' || *transa == 't';
-      const Eigen::MatrixXd op_a = a_transposed ? Eigen::MatrixXd(a.topLeftCorner(k, m).transpose())
-                                                : Eigen::MatrixXd(a.topLeftCorner(m, k));
-      const Eigen::VectorXd x = *transb == 'N' ? Eigen::VectorXd(b.reshaped().head(k))
-                                               : Eigen::VectorXd(b.row(0).head(k).transpose());
+      const Eigen::MatrixXd op_a =
+          a_transposed ? Eigen::MatrixXd(a.topLeftCorner(k, m).transpose()) : Eigen::MatrixXd(a.topLeftCorner(m, k));
+      const Eigen::VectorXd x =
+          *transb == 'N' ? Eigen::VectorXd(b.reshaped().head(k)) : Eigen::VectorXd(b.row(0).head(k).transpose());
       const Eigen::VectorXd c0 = Eigen::VectorXd::Random(m);
       Eigen::VectorXd c = c0;
       const int one = 1;
@@ -58,7 +58,8 @@ TEST(BlasVectorForwarding, OneColumnTriangularSolvesAreTheDefinitionsSolves) {
     for (const char* trans : {"N", "T"})
       for (const char* diag : {"N", "U"}) {
         Eigen::MatrixXd t = a.topRows(m);
-        t = *uplo == 'L' ? Eigen::MatrixXd(t.triangularView<Eigen::Lower>()) : Eigen::MatrixXd(t.triangularView<Eigen::Upper>());
+        t = *uplo == 'L' ? Eigen::MatrixXd(t.triangularView<Eigen::Lower>())
+                         : Eigen::MatrixXd(t.triangularView<Eigen::Upper>());
         if (*diag == 'U') t.diagonal().setOnes();  // the stored diagonal is not read
         const Eigen::MatrixXd op = *trans == 'N' ? t : Eigen::MatrixXd(t.transpose());
         const Eigen::VectorXd rhs = Eigen::VectorXd::Random(m);

@@ -23,8 +23,7 @@ using testing::SineProduct;
 // -lap u = f:  f0 = -f, f1 = grad u.
 struct PoissonKernel {
   SineProduct exact;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     out.f0[0][0] = exact.laplacian(in.x);
     for (int d = 0; d < in.dim; ++d) out.f1[0][0][d] = in.grad[0][0][d];
   }
@@ -33,8 +32,7 @@ struct PoissonKernel {
 // -div sigma(u) = f:  f0 = -f, f1 = sigma = lambda tr(eps) I + 2 mu eps.
 struct ElasticityKernel {
   ElasticSine exact;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     const int dim = in.dim;
     S trace = 0;
     for (int d = 0; d < dim; ++d) trace += in.grad[0][d][d];
@@ -59,9 +57,9 @@ template <class Kernel>
 Errors solve(int dim, Shape shape, int order, int n, int components, const Kernel& kernel, const SineProduct& u) {
   auto mesh = std::make_shared<const Mesh>(make_mesh(dim, shape, n));
   FESpace space(mesh, order, components);
-  auto term = std::make_shared<PointwiseTerm<Kernel>>("operator", Integration::Cells,
-                                                      std::vector<FieldUse>{{"u", true}}, std::vector<int>{0},
-                                                      std::vector<Coupling>{{0, 0}}, kernel, 2);
+  auto term =
+      std::make_shared<PointwiseTerm<Kernel>>("operator", Integration::Cells, std::vector<FieldUse>{{"u", true}},
+                                              std::vector<int>{0}, std::vector<Coupling>{{0, 0}}, kernel, 2);
   auto exact = [&](const double* x, double* out) {
     for (int c = 0; c < components; ++c) out[c] = u.value(x);
   };
@@ -118,21 +116,15 @@ TEST_P(Elasticity, ConvergesAtTheoreticalRates) {
 }
 
 const Case kPoissonCases[] = {
-    {"P1_triangles", 2, Shape::Triangle, 1, {8, 16, 32, 64}},
-    {"P2_triangles", 2, Shape::Triangle, 2, {4, 8, 16, 32}},
-    {"Q1_quads", 2, Shape::Quadrilateral, 1, {8, 16, 32, 64}},
-    {"Q2_quads", 2, Shape::Quadrilateral, 2, {4, 8, 16, 32}},
-    {"P1_tets", 3, Shape::Tetrahedron, 1, {4, 8, 12, 16}},
-    {"P2_tets", 3, Shape::Tetrahedron, 2, {2, 4, 6, 8}},
+    {"P1_triangles", 2, Shape::Triangle, 1, {8, 16, 32, 64}},  {"P2_triangles", 2, Shape::Triangle, 2, {4, 8, 16, 32}},
+    {"Q1_quads", 2, Shape::Quadrilateral, 1, {8, 16, 32, 64}}, {"Q2_quads", 2, Shape::Quadrilateral, 2, {4, 8, 16, 32}},
+    {"P1_tets", 3, Shape::Tetrahedron, 1, {4, 8, 12, 16}},     {"P2_tets", 3, Shape::Tetrahedron, 2, {2, 4, 6, 8}},
     {"Q1_hexes", 3, Shape::Hexahedron, 1, {4, 8, 12, 16}},
 };
 const Case kElasticityCases[] = {
-    {"P1_triangles", 2, Shape::Triangle, 1, {8, 16, 32, 64}},
-    {"P2_triangles", 2, Shape::Triangle, 2, {4, 8, 16, 32}},
-    {"Q1_quads", 2, Shape::Quadrilateral, 1, {8, 16, 32, 64}},
-    {"P1_tets", 3, Shape::Tetrahedron, 1, {4, 8, 12, 16}},
-    {"P2_tets", 3, Shape::Tetrahedron, 2, {2, 4, 6, 8}},
-    {"Q1_hexes", 3, Shape::Hexahedron, 1, {4, 6, 8, 12}},
+    {"P1_triangles", 2, Shape::Triangle, 1, {8, 16, 32, 64}},  {"P2_triangles", 2, Shape::Triangle, 2, {4, 8, 16, 32}},
+    {"Q1_quads", 2, Shape::Quadrilateral, 1, {8, 16, 32, 64}}, {"P1_tets", 3, Shape::Tetrahedron, 1, {4, 8, 12, 16}},
+    {"P2_tets", 3, Shape::Tetrahedron, 2, {2, 4, 6, 8}},       {"Q1_hexes", 3, Shape::Hexahedron, 1, {4, 6, 8, 12}},
 };
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }

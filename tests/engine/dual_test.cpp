@@ -21,12 +21,15 @@ TEST(Dual, ElementaryDerivativesMatchClosedForms) {
   const double x0 = 0.7, y0 = 1.9;
   const D x = D::variable(x0, 0), y = D::variable(y0, 1);
   const D f = x * y + sin(x) / y - exp(x * 0.5) + sqrt(y) * log(y) + pow(x, 3.0) - tanh(y);
-  EXPECT_NEAR(f.v, x0 * y0 + std::sin(x0) / y0 - std::exp(0.5 * x0) + std::sqrt(y0) * std::log(y0) + x0 * x0 * x0 -
-                       std::tanh(y0), 1e-15);
+  EXPECT_NEAR(
+      f.v,
+      x0 * y0 + std::sin(x0) / y0 - std::exp(0.5 * x0) + std::sqrt(y0) * std::log(y0) + x0 * x0 * x0 - std::tanh(y0),
+      1e-15);
   EXPECT_NEAR(f.d[0], y0 + std::cos(x0) / y0 - 0.5 * std::exp(0.5 * x0) + 3 * x0 * x0, 1e-14);
   const double t = std::tanh(y0);
-  EXPECT_NEAR(f.d[1], x0 - std::sin(x0) / (y0 * y0) + (0.5 / std::sqrt(y0)) * std::log(y0) + std::sqrt(y0) / y0 -
-                          (1 - t * t), 1e-14);
+  EXPECT_NEAR(f.d[1],
+              x0 - std::sin(x0) / (y0 * y0) + (0.5 / std::sqrt(y0)) * std::log(y0) + std::sqrt(y0) / y0 - (1 - t * t),
+              1e-14);
 }
 
 TEST(Dual, KinksTakeTheDocumentedOneSidedDerivative) {
@@ -39,7 +42,8 @@ TEST(Dual, KinksTakeTheDocumentedOneSidedDerivative) {
   EXPECT_TRUE(std::isfinite(sqrt(zero).d[0]));
 }
 
-// Isotropic elasticity written as a flux kernel (bricks/elastic_flux_kernel.hpp: tangent from Dual) and by hand: K_ij = sum_q w (lambda div N_i div N_j + mu (grad N_i : grad N_j + grad N_i : grad N_j^T)).
+// Isotropic elasticity written as a flux kernel (bricks/elastic_flux_kernel.hpp: tangent from Dual) and by hand: K_ij =
+// sum_q w (lambda div N_i div N_j + mu (grad N_i : grad N_j + grad N_i : grad N_j^T)).
 class HandElasticity : public Term {
  public:
   HandElasticity(double lambda, double mu)
@@ -89,8 +93,7 @@ TEST(Dual, GenericTangentEqualsHandWrittenElasticity) {
 
 // A nonlinear diffusion-reaction pair of fields: f0_u = u^3 + u p, f1_u = (1 + u^2) grad u, f0_p = sin(u) p.
 struct Nonlinear {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     using std::sin;
     const S u = in.value[0][0], p = in.value[1][0];
     out.f0[0][0] = u * u * u + u * p;

@@ -42,8 +42,8 @@ TEST(Gmres, AnExactPreconditionerTakesOneIteration) {
   }
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1, 2);
-  const GmresResult r =
-      gmres(product_with(a), [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return lu.solve(v); }, b);
+  const GmresResult r = gmres(
+      product_with(a), [&](const Eigen::VectorXd& v) -> Eigen::VectorXd { return lu.solve(v); }, b);
   ASSERT_TRUE(r.converged);
   EXPECT_EQ(r.iterations, 1);
   EXPECT_LT((r.x - lu.solve(b)).norm(), 1e-12 * lu.solve(b).norm());

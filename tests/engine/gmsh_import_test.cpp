@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -26,8 +26,7 @@ class GmshImportTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() /
-                 ("piezocontact_" + std::to_string(getpid()) + "_" + test->name());
+    directory_ = fs::temp_directory_path() / ("piezocontact_" + std::to_string(getpid()) + "_" + test->name());
     fs::create_directories(directory_);
   }
   void TearDown() override { fs::remove_all(directory_); }

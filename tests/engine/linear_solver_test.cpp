@@ -12,8 +12,8 @@
 
 #include "assembly/error.hpp"
 #include "assembly/sparse.hpp"
-#include "support/test_matrices.hpp"
 #include "support/test_helpers.hpp"
+#include "support/test_matrices.hpp"
 
 namespace pc {
 namespace {
@@ -26,9 +26,7 @@ double relative_residual(const CsrMatrix& matrix, const Eigen::VectorXd& x, cons
 
 using testing::error_of;
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 std::vector<std::string> lu_solvers() { return {"eigen-lu", "umfpack", "mumps"}; }
 
@@ -137,8 +135,7 @@ TEST_P(EverySolver, ThrowsOnThePureNeumannLaplacianWithAnUnbalancedLoad) {
 TEST_P(EverySolver, RejectsMisuseWithClearMessages) {
   const CsrMatrix matrix = laplacian_2d(4);
   const Eigen::VectorXd b = rhs_for(matrix);
-  EXPECT_TRUE(
-      contains(error_of([&] { solver->factorize(matrix); }), "factorize() needs a successful analyze()"));
+  EXPECT_TRUE(contains(error_of([&] { solver->factorize(matrix); }), "factorize() needs a successful analyze()"));
   EXPECT_TRUE(contains(error_of([&] { solver->solve(b); }), "solve() needs a successful factorize()"));
 
   const CsrMatrix rectangular = from_triplets(3, 4, {{0, 0, 1.0}, {1, 1, 1.0}, {2, 2, 1.0}});
@@ -161,8 +158,7 @@ TEST_P(EverySolver, RejectsMisuseWithClearMessages) {
   for (int row = 0; row < matrix.rows(); ++row)
     for (CsrMatrix::InnerIterator entry(matrix, row); entry; ++entry)
       moved.emplace_back(row, row == 0 && entry.col() == 1 ? 2 : entry.col(), entry.value());
-  EXPECT_TRUE(
-      contains(error_of([&] { solver->factorize(from_triplets(16, 16, moved)); }), "another pattern"));
+  EXPECT_TRUE(contains(error_of([&] { solver->factorize(from_triplets(16, 16, moved)); }), "another pattern"));
 
   CsrMatrix with_nan = matrix;
   with_nan.coeffRef(5, 6) = std::numeric_limits<double>::quiet_NaN();
@@ -172,8 +168,7 @@ TEST_P(EverySolver, RejectsMisuseWithClearMessages) {
   solver->factorize(matrix);
   Eigen::VectorXd with_inf = b;
   with_inf[7] = std::numeric_limits<double>::infinity();
-  EXPECT_TRUE(
-      contains(error_of([&] { solver->solve(with_inf); }), "right-hand side contains NaN/Inf at row 7"));
+  EXPECT_TRUE(contains(error_of([&] { solver->solve(with_inf); }), "right-hand side contains NaN/Inf at row 7"));
   const std::string rhs_size_message = error_of([&] { solver->solve(Eigen::VectorXd::Ones(3)); });
   EXPECT_TRUE(contains(rhs_size_message, "3 rows") && contains(rhs_size_message, "16")) << rhs_size_message;
   EXPECT_LT(relative_residual(matrix, solver->solve(b), b), 1e-12);  // still usable after the errors
@@ -232,23 +227,20 @@ TEST(LinearSolvers, CholmodAgreesWithTheLuSolversOnTheSpdLaplacian) {
 
 TEST(LinearSolvers, CholmodRejectsIndefiniteAndUnsymmetricMatrices) {
   const CsrMatrix saddle = saddle_point(5);
-  const std::string indefinite =
-      error_of([&] { make_linear_solver("cholmod")->solve_once(saddle, rhs_for(saddle)); });
+  const std::string indefinite = error_of([&] { make_linear_solver("cholmod")->solve_once(saddle, rhs_for(saddle)); });
   EXPECT_TRUE(contains(indefinite, "cholmod: the matrix is not positive definite")) << indefinite;
 
   const CsrMatrix convection = convection_diffusion_2d(5);
   const std::string unsymmetric =
       error_of([&] { make_linear_solver("cholmod")->solve_once(convection, rhs_for(convection)); });
-  EXPECT_TRUE(
-      contains(unsymmetric, "cholmod: the matrix is not symmetric: A(0, 1) = -0.6 but A(1, 0) = -1.4"))
+  EXPECT_TRUE(contains(unsymmetric, "cholmod: the matrix is not symmetric: A(0, 1) = -0.6 but A(1, 0) = -1.4"))
       << unsymmetric;
 }
 
 TEST(LinearSolvers, UnknownNameListsTheKnownOnes) {
   const std::string message = error_of([] { make_linear_solver("superlu"); });
   EXPECT_TRUE(contains(message, "unknown linear solver 'superlu'")) << message;
-  for (const char* name : {"eigen-lu", "umfpack", "mumps", "cholmod"})
-    EXPECT_TRUE(contains(message, name)) << message;
+  for (const char* name : {"eigen-lu", "umfpack", "mumps", "cholmod"}) EXPECT_TRUE(contains(message, name)) << message;
   EXPECT_EQ(make_linear_solver()->name(), "umfpack");
 }
 

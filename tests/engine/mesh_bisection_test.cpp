@@ -90,7 +90,8 @@ TEST(MeshBisection, RefiningACornerKeepsTheAnglesAndTheRegions) {
   EXPECT_NEAR(mesh->region_measure("all"), 3.0, 1e-12);
   EXPECT_NEAR(mesh->region_measure("boundary"), 8.0, 1e-12);
   for (const char* side : {"left", "right", "top", "bottom"})
-    EXPECT_NEAR(mesh->region_measure(side), std::string(side) == "left" || std::string(side) == "right" ? 1.0 : 3.0, 1e-12)
+    EXPECT_NEAR(mesh->region_measure(side), std::string(side) == "left" || std::string(side) == "right" ? 1.0 : 3.0,
+                1e-12)
         << side;
   for (const FaceRef& f : mesh->face_region("bottom"))
     for (int n : mesh->face_nodes(f)) EXPECT_NEAR(mesh->node(n)[1], 0.0, 1e-15);

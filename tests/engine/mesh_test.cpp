@@ -108,12 +108,16 @@ INSTANTIATE_TEST_SUITE_P(Shapes, BoxMeshTest, ::testing::Values(Shape::Tetrahedr
                          [](const auto& info) { return to_string(info.param); });
 
 TEST(MeshGenerators, RejectBadArguments) {
-  EXPECT_THAT(error_of([] { rectangle_mesh({0, 0}, {1, 1}, 0, 1); }),
+  EXPECT_THAT(error_of([] {
+                rectangle_mesh({0, 0}, {1, 1}, 0, 1);
+              }),
               HasSubstr("rectangle_mesh: nx must be at least 1, got 0"));
   EXPECT_THAT(error_of([] { rectangle_mesh({0, 1}, {1, 1}, 1, 1); }), HasSubstr("upper y"));
   EXPECT_THAT(error_of([] { box_mesh({0, 0, 0}, {1, 1, 1}, 1, 1, -2); }), HasSubstr("nz must be at least 1"));
   EXPECT_THAT(error_of([] { box_mesh({0, 0, 2}, {1, 1, 1}, 1, 1, 1); }), HasSubstr("upper z"));
-  EXPECT_THAT(error_of([] { box_mesh({0, 0, 0}, {1, 1, 1}, 1, 1, 1, Shape::Triangle); }),
+  EXPECT_THAT(error_of([] {
+                box_mesh({0, 0, 0}, {1, 1, 1}, 1, 1, 1, Shape::Triangle);
+              }),
               HasSubstr("shape must be tetrahedron or hexahedron"));
 }
 
@@ -163,44 +167,65 @@ TEST(Mesh, RegionErrors) {
               HasSubstr("region 'far' is empty"));
   EXPECT_THAT(error_of([&] { mesh.add_cell_region("left", {0}); }),
               HasSubstr("region 'left' already exists (a face region)"));
-  EXPECT_THAT(error_of([&] { mesh.add_face_region("all", {{0, 0}}); }),
+  EXPECT_THAT(error_of([&] {
+                mesh.add_face_region("all", {{0, 0}});
+              }),
               HasSubstr("region 'all' already exists (a cell region)"));
-  EXPECT_THAT(error_of([&] { mesh.add_cell_region("bad", {0, 8}); }),
+  EXPECT_THAT(error_of([&] {
+                mesh.add_cell_region("bad", {0, 8});
+              }),
               HasSubstr("cell region 'bad': cell 8 does not exist (the mesh has 8 cells)"));
-  EXPECT_THAT(error_of([&] { mesh.add_face_region("bad", {{0, 3}}); }),
+  EXPECT_THAT(error_of([&] {
+                mesh.add_face_region("bad", {{0, 3}});
+              }),
               HasSubstr("face region 'bad': face (cell 0, local face 3) does not exist"));
   EXPECT_FALSE(mesh.has_region("bad"));
 }
 
 TEST(Mesh, RejectsInvalidCells) {
   const std::vector<double> square = {0, 0, 1, 0, 1, 1, 0, 1};
-  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, square, {0, 1, 2, 0, 3, 2}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(2, Shape::Triangle, square, {0, 1, 2, 0, 3, 2});
+              }),
               HasSubstr("cell 1 (nodes 0 3 2) is inverted: det J = -1"));
-  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, {0, 0, 1, 0, 2, 1e-14}, {0, 1, 2}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(2, Shape::Triangle, {0, 0, 1, 0, 2, 1e-14}, {0, 1, 2});
+              }),
               HasSubstr("cell 0 (nodes 0 1 2) is degenerate: det J = "));
   // A self-intersecting ("bow-tie") quadrilateral has det J < 0 at two of its vertices.
-  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Quadrilateral, square, {0, 1, 3, 2}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(2, Shape::Quadrilateral, square, {0, 1, 3, 2});
+              }),
               HasSubstr("cell 0 (nodes 0 1 3 2) is inverted: det J = "));
-  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, square, {0, 1, 2, 0, 2, 4}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(2, Shape::Triangle, square, {0, 1, 2, 0, 2, 4});
+              }),
               HasSubstr("cell 1 (nodes 0 2 4) refers to node 4, but the mesh has 4 nodes"));
-  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, square, {0, 1, 1}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(2, Shape::Triangle, square, {0, 1, 1});
+              }),
               HasSubstr("cell 0 (nodes 0 1 1) repeats node 1"));
-  EXPECT_THAT(error_of([&] { Mesh(3, Shape::Triangle, {0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(3, Shape::Triangle, {0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 1, 2});
+              }),
               HasSubstr("triangle cells have dimension 2 but the mesh has dim 3"));
-  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, {0, 0, 1}, {0, 1, 2}); }),
-              HasSubstr("not a multiple of dim 2"));
+  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, {0, 0, 1}, {0, 1, 2}); }), HasSubstr("not a multiple of dim 2"));
   EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, square, {}); }), HasSubstr("no cells"));
 
   // An inverted tetrahedron: two vertices of the reference tetrahedron swapped.
   const std::vector<double> unit_tet = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-  EXPECT_THAT(error_of([&] { Mesh(3, Shape::Tetrahedron, unit_tet, {0, 2, 1, 3}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(3, Shape::Tetrahedron, unit_tet, {0, 2, 1, 3});
+              }),
               HasSubstr("cell 0 (nodes 0 2 1 3) is inverted: det J = -1"));
 }
 
 TEST(Mesh, RejectsNonManifoldFaces) {
   // Three triangles on the edge 0-1.
   const std::vector<double> xyz = {0, 0, 1, 0, 0.5, 1, 0.5, -1, 0.5, 2};
-  EXPECT_THAT(error_of([&] { Mesh(2, Shape::Triangle, xyz, {0, 1, 2, 1, 0, 3, 0, 1, 4}); }),
+  EXPECT_THAT(error_of([&] {
+                Mesh(2, Shape::Triangle, xyz, {0, 1, 2, 1, 0, 3, 0, 1, 4});
+              }),
               HasSubstr("non-manifold mesh: the face with nodes 0 1 is shared by 3 cells (0 1 2)"));
 }
 

@@ -28,8 +28,8 @@ std::ostream& operator<<(std::ostream& out, const MeshCase& c) { return out << c
 // the same box.
 Mesh make_mesh(const MeshCase& c) {
   const bool is_2d = dimension(c.shape) == 2;
-  Mesh straight = is_2d ? rectangle_mesh({1, -1}, {2, 0}, 5, 4, c.shape)
-                        : box_mesh({1, -1, 0}, {2, 0, 1}, 3, 4, 3, c.shape);
+  Mesh straight =
+      is_2d ? rectangle_mesh({1, -1}, {2, 0}, 5, 4, c.shape) : box_mesh({1, -1, 0}, {2, 0, 1}, 3, 4, 3, c.shape);
   if (!c.distorted) return straight;
   const int dim = straight.dim();
   std::vector<double> coordinates = straight.coordinates();
@@ -228,7 +228,8 @@ TEST_P(EvaluateAtTest, ReproducesPolynomialsOfTheSpaceDegree) {
       f(x.data(), exact);
       const auto value = evaluate_at(space, coefficients, locator, x.data());
       ASSERT_EQ(value.size(), 2u);
-      for (int k = 0; k < 2; ++k) EXPECT_NEAR(value[k], exact[k], 1e-12 * (1 + std::abs(exact[k]))) << "order " << order;
+      for (int k = 0; k < 2; ++k)
+        EXPECT_NEAR(value[k], exact[k], 1e-12 * (1 + std::abs(exact[k]))) << "order " << order;
     }
     const double outside[3] = {0, 0, 0};
     EXPECT_THROW(evaluate_at(space, coefficients, locator, outside), Error);

@@ -55,8 +55,7 @@ class MonomialIntegrator {
   double integrate(const std::array<int, 3>& e) const {
     double sum = 0;
     for (int q = 0; q < rule_.size(); ++q) {
-      sum += rule_.weights[q] * powers_[index(q, 0, e[0])] * powers_[index(q, 1, e[1])] *
-             powers_[index(q, 2, e[2])];
+      sum += rule_.weights[q] * powers_[index(q, 0, e[0])] * powers_[index(q, 1, e[1])] * powers_[index(q, 2, e[2])];
     }
     return sum;
   }
@@ -103,8 +102,7 @@ TEST(Quadrature, IntegratesEveryMonomialOfItsDegreeExactly) {
       for (const auto& e : exact_monomials(shape, degree)) {
         const double exact = exact_monomial_integral(shape, e);
         EXPECT_NEAR(integrator.integrate(e), exact, 1e-13 * exact)
-            << to_string(shape) << " degree " << degree << " monomial x^" << e[0] << " y^" << e[1] << " z^"
-            << e[2];
+            << to_string(shape) << " degree " << degree << " monomial x^" << e[0] << " y^" << e[1] << " z^" << e[2];
       }
     }
   }
@@ -120,8 +118,7 @@ TEST(Quadrature, OddDegreesAreTight) {
       const MonomialIntegrator integrator(quadrature(shape, degree), degree + 1);
       const std::array<int, 3> e{degree + 1, 0, 0};
       const double exact = exact_monomial_integral(shape, e);
-      EXPECT_GT(std::abs(integrator.integrate(e) - exact), 1e-11 * exact)
-          << to_string(shape) << " degree " << degree;
+      EXPECT_GT(std::abs(integrator.integrate(e) - exact), 1e-11 * exact) << to_string(shape) << " degree " << degree;
     }
   }
 }
@@ -285,8 +282,7 @@ TEST(Quadrature, FaceRulesMapOntoTheFacesWithTheirMeasure) {
         for (int d = 0; d < 3; ++d) {
           double mean = 0;
           for (const int v : vertices) mean += reference_vertex(cell, v)[d] / double(vertices.size());
-          EXPECT_NEAR(moment[d] / measure, mean, 1e-12)
-              << to_string(cell) << " face " << face << " axis " << d;
+          EXPECT_NEAR(moment[d] / measure, mean, 1e-12) << to_string(cell) << " face " << face << " axis " << d;
         }
       }
     }

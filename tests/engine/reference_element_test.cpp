@@ -20,14 +20,12 @@ struct ElementCase {
   int dofs_per_face;
 };
 
-constexpr ElementCase kElements[] = {
-    {Shape::Triangle, 1, 3, 2},      {Shape::Triangle, 2, 6, 3},    {Shape::Quadrilateral, 1, 4, 2},
-    {Shape::Quadrilateral, 2, 9, 3}, {Shape::Tetrahedron, 1, 4, 3}, {Shape::Tetrahedron, 2, 10, 6},
-    {Shape::Hexahedron, 1, 8, 4},    {Shape::Hexahedron, 2, 27, 9}};
+constexpr ElementCase kElements[] = {{Shape::Triangle, 1, 3, 2},      {Shape::Triangle, 2, 6, 3},
+                                     {Shape::Quadrilateral, 1, 4, 2}, {Shape::Quadrilateral, 2, 9, 3},
+                                     {Shape::Tetrahedron, 1, 4, 3},   {Shape::Tetrahedron, 2, 10, 6},
+                                     {Shape::Hexahedron, 1, 8, 4},    {Shape::Hexahedron, 2, 27, 9}};
 
-std::string describe(const ElementCase& c) {
-  return to_string(c.shape) + " order " + std::to_string(c.order);
-}
+std::string describe(const ElementCase& c) { return to_string(c.shape) + " order " + std::to_string(c.order); }
 
 // Uniform random points of the reference cell (the simplex by rejection from the cube).
 std::vector<std::array<double, 3>> random_points(Shape shape, int count) {

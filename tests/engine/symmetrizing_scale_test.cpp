@@ -118,8 +118,8 @@ TEST(SymmetrizingRowScale, RefusesNonsymmetricValuesAndPatterns) {
   EXPECT_FALSE(symmetrizing_row_scale(from_triplets(16, 16, t)).has_value());
   // A cycle whose weights do not close: a_01 a_12 a_20 != a_10 a_21 a_02, no diagonal scaling exists
   // although every single pair could be matched.
-  const CsrMatrix cycle = from_triplets(3, 3, {{0, 0, 4}, {1, 1, 4}, {2, 2, 4}, {0, 1, 1}, {1, 0, 2}, {1, 2, 1},
-                                               {2, 1, 1}, {2, 0, 1}, {0, 2, 1}});
+  const CsrMatrix cycle = from_triplets(
+      3, 3, {{0, 0, 4}, {1, 1, 4}, {2, 2, 4}, {0, 1, 1}, {1, 0, 2}, {1, 2, 1}, {2, 1, 1}, {2, 0, 1}, {0, 2, 1}});
   EXPECT_FALSE(symmetrizing_row_scale(cycle).has_value());
   // A non-finite entry.
   CsrMatrix nan = laplacian_2d(3);

@@ -17,21 +17,18 @@ namespace {
 // tangent), over cells or faces.
 struct Diffusion {
   double k;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     for (int d = 0; d < in.dim; ++d) out.f1[0][0][d] = k * in.grad[0][0][d];
   }
 };
 struct Reaction {
   double c;
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     out.f0[0][0] = c * in.value[0][0] * in.value[0][0] * in.value[0][0];
   }
 };
 
-template <class Kernel>
-std::shared_ptr<const Term> term(Integration integration, Kernel kernel) {
+template <class Kernel> std::shared_ptr<const Term> term(Integration integration, Kernel kernel) {
   const bool gradient = integration == Integration::Cells;  // faces have none
   return std::make_shared<PointwiseTerm<Kernel>>("test term", integration, std::vector<FieldUse>{{"u", gradient}},
                                                  std::vector<int>{0}, std::vector<Coupling>{{0, 0}}, kernel);
@@ -39,7 +36,8 @@ std::shared_ptr<const Term> term(Integration integration, Kernel kernel) {
 
 class TermAssemblyCacheTest : public ::testing::Test {
  protected:
-  std::shared_ptr<const Mesh> mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
+  std::shared_ptr<const Mesh> mesh =
+      std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
   FESpace space{mesh, 2, 1};
   FESpace p1_space{mesh, 1, 1};  // that no term of the tests uses
   Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(space.num_dofs(), -1.0, 2.0);

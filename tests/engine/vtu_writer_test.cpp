@@ -1,8 +1,8 @@
 // The .vtu files are parsed back in every format (tests/support/vtu_reader.hpp: text, base64, raw and
 // zlib appended data) and compared with the mesh and with the fields' exact values at the nodes, for
 // quadratic cells also with VTK's node order; the .pvd collection is read back as text.
-#include "support/error_and_temp_dir.hpp"
 #include "assembly/vtu_writer.hpp"
+#include "support/error_and_temp_dir.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -11,10 +11,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <functional>
-#include <map>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <memory>
 #include <regex>
 #include <sstream>
@@ -38,8 +38,7 @@ void expect_mesh(const std::string& vtu, const Mesh& mesh, int vtk_type) {
   EXPECT_NE(vtu.find("type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
                      "header_type=\"UInt64\""),
             std::string::npos);
-  EXPECT_NE(vtu.find(message("NumberOfPoints=\"", mesh.num_nodes(), "\" NumberOfCells=\"", mesh.num_cells(),
-                             "\"")),
+  EXPECT_NE(vtu.find(message("NumberOfPoints=\"", mesh.num_nodes(), "\" NumberOfCells=\"", mesh.num_cells(), "\"")),
             std::string::npos);
 
   const DataArray points = find_array(vtu, "Points", "Points");
@@ -212,12 +211,32 @@ std::vector<VtkQuadraticCell> vtk_quadratic_cells() {
   return {
       {Shape::Triangle, 22, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1}, {1, 2}, {2, 0}}},
       {Shape::Quadrilateral, 28, square, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 1, 2, 3}}},
-      {Shape::Tetrahedron, 24, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+      {Shape::Tetrahedron,
+       24,
+       {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
        {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}}},
       // Faces in the order of VTK's parametric coordinates: x = 0, x = 1, y = 0, y = 1, z = 0, z = 1.
-      {Shape::Hexahedron, 29, cube,
-       {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
-        {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}, {0, 3, 2, 1}, {4, 5, 6, 7},
+      {Shape::Hexahedron,
+       29,
+       cube,
+       {{0, 1},
+        {1, 2},
+        {2, 3},
+        {3, 0},
+        {4, 5},
+        {5, 6},
+        {6, 7},
+        {7, 4},
+        {0, 4},
+        {1, 5},
+        {2, 6},
+        {3, 7},
+        {0, 4, 7, 3},
+        {1, 2, 6, 5},
+        {0, 1, 5, 4},
+        {3, 7, 6, 2},
+        {0, 3, 2, 1},
+        {4, 5, 6, 7},
         {0, 1, 2, 3, 4, 5, 6, 7}}},
   };
 }
@@ -252,8 +271,8 @@ TEST(VtkQuadraticCells, NodesAreTheOrderTwoElementsDofsInTheirLocalOrder) {
 // one another nor, for quadrilaterals and hexahedra, parallelograms.
 std::shared_ptr<const Mesh> distorted_mesh(Shape shape) {
   const int dim = dimension(shape);
-  const Mesh base = dim == 2 ? rectangle_mesh({0, 0}, {1, 1}, 3, 2, shape)
-                             : box_mesh({0, 0, 0}, {1, 1, 1}, 2, 2, 2, shape);
+  const Mesh base =
+      dim == 2 ? rectangle_mesh({0, 0}, {1, 1}, 3, 2, shape) : box_mesh({0, 0, 0}, {1, 1, 1}, 2, 2, 2, shape);
   std::vector<double> x = base.coordinates();
   for (int n = 0; n < base.num_nodes(); ++n) {
     double* p = x.data() + size_t(n) * dim;
@@ -428,72 +447,72 @@ TEST_F(VtuWriterTest, PiecesOfThePartsMakeTheWholeFileAndThePvtuNamesThem) {
   // Every format (the appended ones read the values when the file ends), linear and quadratic files (whose
   // data at the mesh nodes is interpolated, then cut to the piece).
   for (const VtuFormat format : kFormats)
-  for (int order : {1, 2}) {
-    SCOPED_TRACE(message(to_string(format), ", order ", order));
-    FESpace space(mesh, order, 2);
-    std::vector<double> cell_ids(mesh->num_cells());
-    for (int c = 0; c < mesh->num_cells(); ++c) cell_ids[c] = c;
-    VtuWriter writer(*mesh);
-    writer.add_point_field("u", space, space.interpolate(linear_vector));
-    std::vector<double> x_at_nodes(mesh->num_nodes());
-    for (int n = 0; n < mesh->num_nodes(); ++n) x_at_nodes[n] = mesh->node(n)[0];
-    writer.add_point_data("x", 1, x_at_nodes);
-    writer.add_cell_data("cell", 1, cell_ids);
-    const fs::path whole_path = directory_ / "whole.vtu";
-    writer.write(whole_path.string(), format);
-    const std::string whole = read_text(whole_path);
-    // The whole file's value of u at each point, by its coordinates.
-    const auto points = find_array(whole, "Points", "Points").doubles();
-    const auto u = find_array(whole, "PointData", "u").doubles();
-    const auto x = find_array(whole, "PointData", "x").doubles();
-    std::map<std::array<double, 3>, std::array<double, 4>> u_at;  // u and x at each point
-    for (size_t p = 0; p * 3 < points.size(); ++p)
-      u_at[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = {u[3 * p], u[3 * p + 1], u[3 * p + 2], x[p]};
+    for (int order : {1, 2}) {
+      SCOPED_TRACE(message(to_string(format), ", order ", order));
+      FESpace space(mesh, order, 2);
+      std::vector<double> cell_ids(mesh->num_cells());
+      for (int c = 0; c < mesh->num_cells(); ++c) cell_ids[c] = c;
+      VtuWriter writer(*mesh);
+      writer.add_point_field("u", space, space.interpolate(linear_vector));
+      std::vector<double> x_at_nodes(mesh->num_nodes());
+      for (int n = 0; n < mesh->num_nodes(); ++n) x_at_nodes[n] = mesh->node(n)[0];
+      writer.add_point_data("x", 1, x_at_nodes);
+      writer.add_cell_data("cell", 1, cell_ids);
+      const fs::path whole_path = directory_ / "whole.vtu";
+      writer.write(whole_path.string(), format);
+      const std::string whole = read_text(whole_path);
+      // The whole file's value of u at each point, by its coordinates.
+      const auto points = find_array(whole, "Points", "Points").doubles();
+      const auto u = find_array(whole, "PointData", "u").doubles();
+      const auto x = find_array(whole, "PointData", "x").doubles();
+      std::map<std::array<double, 3>, std::array<double, 4>> u_at;  // u and x at each point
+      for (size_t p = 0; p * 3 < points.size(); ++p)
+        u_at[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = {u[3 * p], u[3 * p + 1], u[3 * p + 2], x[p]};
 
-    std::vector<int> seen(mesh->num_cells(), 0);
-    std::vector<std::string> pieces;
-    for (int part = 0; part < 3; ++part) {
-      std::vector<char> cells(mesh->num_cells(), 0);
-      for (int c = 0; c < mesh->num_cells(); ++c) cells[c] = c % 3 == part;  // parts need not hang together
-      pieces.push_back("piece_" + std::to_string(part) + ".vtu");
-      writer.write((directory_ / pieces.back()).string(), format, cells);
-      const std::string piece = read_text(directory_ / pieces.back());
-      const auto ids = find_array(piece, "CellData", "cell").doubles();
-      for (double id : ids) {
-        EXPECT_EQ(int(id) % 3, part);
-        ++seen[int(id)];
+      std::vector<int> seen(mesh->num_cells(), 0);
+      std::vector<std::string> pieces;
+      for (int part = 0; part < 3; ++part) {
+        std::vector<char> cells(mesh->num_cells(), 0);
+        for (int c = 0; c < mesh->num_cells(); ++c) cells[c] = c % 3 == part;  // parts need not hang together
+        pieces.push_back("piece_" + std::to_string(part) + ".vtu");
+        writer.write((directory_ / pieces.back()).string(), format, cells);
+        const std::string piece = read_text(directory_ / pieces.back());
+        const auto ids = find_array(piece, "CellData", "cell").doubles();
+        for (double id : ids) {
+          EXPECT_EQ(int(id) % 3, part);
+          ++seen[int(id)];
+        }
+        const auto piece_points = find_array(piece, "Points", "Points").doubles();
+        const auto piece_u = find_array(piece, "PointData", "u").doubles();
+        const auto piece_x = find_array(piece, "PointData", "x").doubles();
+        ASSERT_EQ(piece_points.size(), piece_u.size());
+        ASSERT_EQ(piece_points.size(), 3 * piece_x.size());
+        EXPECT_LT(piece_points.size(), points.size()) << "a piece holds every point";
+        for (size_t p = 0; p * 3 < piece_points.size(); ++p) {
+          const auto found = u_at.find({piece_points[3 * p], piece_points[3 * p + 1], piece_points[3 * p + 2]});
+          ASSERT_NE(found, u_at.end()) << "a piece's point that the whole file does not have";
+          for (int k = 0; k < 3; ++k) EXPECT_EQ(piece_u[3 * p + k], found->second[k]);
+          EXPECT_EQ(piece_x[p], found->second[3]);
+          EXPECT_NEAR(piece_x[p], piece_points[3 * p], 1e-15) << "x interpolated at the point is its x";
+        }
+        const auto offsets = find_array(piece, "Cells", "offsets").int64s();
+        ASSERT_EQ(offsets.size(), ids.size());
+        for (std::int64_t node : find_array(piece, "Cells", "connectivity").int64s()) {
+          EXPECT_GE(node, 0);
+          EXPECT_LT(node, std::int64_t(piece_points.size() / 3));
+        }
       }
-      const auto piece_points = find_array(piece, "Points", "Points").doubles();
-      const auto piece_u = find_array(piece, "PointData", "u").doubles();
-      const auto piece_x = find_array(piece, "PointData", "x").doubles();
-      ASSERT_EQ(piece_points.size(), piece_u.size());
-      ASSERT_EQ(piece_points.size(), 3 * piece_x.size());
-      EXPECT_LT(piece_points.size(), points.size()) << "a piece holds every point";
-      for (size_t p = 0; p * 3 < piece_points.size(); ++p) {
-        const auto found = u_at.find({piece_points[3 * p], piece_points[3 * p + 1], piece_points[3 * p + 2]});
-        ASSERT_NE(found, u_at.end()) << "a piece's point that the whole file does not have";
-        for (int k = 0; k < 3; ++k) EXPECT_EQ(piece_u[3 * p + k], found->second[k]);
-        EXPECT_EQ(piece_x[p], found->second[3]);
-        EXPECT_NEAR(piece_x[p], piece_points[3 * p], 1e-15) << "x interpolated at the point is its x";
-      }
-      const auto offsets = find_array(piece, "Cells", "offsets").int64s();
-      ASSERT_EQ(offsets.size(), ids.size());
-      for (std::int64_t node : find_array(piece, "Cells", "connectivity").int64s()) {
-        EXPECT_GE(node, 0);
-        EXPECT_LT(node, std::int64_t(piece_points.size() / 3));
-      }
+      EXPECT_EQ(seen, std::vector<int>(mesh->num_cells(), 1)) << "each cell in one piece";
+
+      const fs::path pvtu = directory_ / "whole.pvtu";
+      writer.write_pvtu(pvtu.string(), pieces);
+      const std::string text = read_text(pvtu);
+      EXPECT_NE(text.find("<VTKFile type=\"PUnstructuredGrid\""), std::string::npos);
+      EXPECT_NE(text.find("<PDataArray type=\"Float64\" Name=\"u\" NumberOfComponents=\"3\"/>"), std::string::npos);
+      EXPECT_NE(text.find("<PDataArray type=\"Float64\" Name=\"cell\" NumberOfComponents=\"1\"/>"), std::string::npos);
+      for (const std::string& piece : pieces)
+        EXPECT_NE(text.find("<Piece Source=\"" + piece + "\"/>"), std::string::npos) << piece;
     }
-    EXPECT_EQ(seen, std::vector<int>(mesh->num_cells(), 1)) << "each cell in one piece";
-
-    const fs::path pvtu = directory_ / "whole.pvtu";
-    writer.write_pvtu(pvtu.string(), pieces);
-    const std::string text = read_text(pvtu);
-    EXPECT_NE(text.find("<VTKFile type=\"PUnstructuredGrid\""), std::string::npos);
-    EXPECT_NE(text.find("<PDataArray type=\"Float64\" Name=\"u\" NumberOfComponents=\"3\"/>"), std::string::npos);
-    EXPECT_NE(text.find("<PDataArray type=\"Float64\" Name=\"cell\" NumberOfComponents=\"1\"/>"), std::string::npos);
-    for (const std::string& piece : pieces)
-      EXPECT_NE(text.find("<Piece Source=\"" + piece + "\"/>"), std::string::npos) << piece;
-  }
   EXPECT_THROW(VtuWriter(*mesh).write((directory_ / "bad.vtu").string(), kDefaultVtuFormat, std::vector<char>(3, 1)),
                Error);
 }
@@ -503,9 +522,18 @@ TEST_F(VtuWriterTest, PiecesOfThePartsMakeTheWholeFileAndThePvtuNamesThem) {
 // Values that a careless text or binary encoding would change: signed zero, subnormals, the extremes,
 // and fractions with no short decimal form.
 std::vector<double> awkward_values(size_t count) {
-  const std::vector<double> awkward = {-0.0, 0.1, 1.0 / 3.0, -2.0 / 7.0, 5e-324, -2.2250738585072014e-308,
-                                       1.7976931348623157e308, -1.7976931348623157e308, 3.141592653589793e-300,
-                                       123456789012345678.0, 1e-7, -9.999999999999999e22};
+  const std::vector<double> awkward = {-0.0,
+                                       0.1,
+                                       1.0 / 3.0,
+                                       -2.0 / 7.0,
+                                       5e-324,
+                                       -2.2250738585072014e-308,
+                                       1.7976931348623157e308,
+                                       -1.7976931348623157e308,
+                                       3.141592653589793e-300,
+                                       123456789012345678.0,
+                                       1e-7,
+                                       -9.999999999999999e22};
   std::vector<double> values(count);
   for (size_t i = 0; i < count; ++i) values[i] = awkward[i % awkward.size()] * (i < awkward.size() ? 1 : 1 + 1e-3 * i);
   return values;
@@ -526,9 +554,10 @@ TEST_F(VtuWriterTest, EveryFormatReadsBackBitForBitWithItsOwnEncoding) {
   VtuWriter writer(*mesh);
   writer.add_point_data("awkward", 3, at_nodes);
   writer.add_cell_data("awkward_cells", 2, at_cells);
-  const std::map<VtuFormat, std::string> encoding = {
-      {VtuFormat::Ascii, "ascii"}, {VtuFormat::Base64, "binary"}, {VtuFormat::Binary, "appended"},
-      {VtuFormat::Zlib, "appended"}};
+  const std::map<VtuFormat, std::string> encoding = {{VtuFormat::Ascii, "ascii"},
+                                                     {VtuFormat::Base64, "binary"},
+                                                     {VtuFormat::Binary, "appended"},
+                                                     {VtuFormat::Zlib, "appended"}};
   for (const VtuFormat format : kFormats) {
     SCOPED_TRACE(to_string(format));
     const fs::path path = directory_ / "awkward.vtu";
@@ -543,9 +572,12 @@ TEST_F(VtuWriterTest, EveryFormatReadsBackBitForBitWithItsOwnEncoding) {
     expect_same_bits(cells.doubles(), at_cells, "cell data");
     expect_mesh(vtu, *mesh, 9);
 
-    for (const auto& [section, name] : std::vector<std::pair<std::string, std::string>>{
-             {"PointData", "awkward"}, {"CellData", "awkward_cells"}, {"Points", "Points"},
-             {"Cells", "connectivity"}, {"Cells", "offsets"}, {"Cells", "types"}})
+    for (const auto& [section, name] : std::vector<std::pair<std::string, std::string>>{{"PointData", "awkward"},
+                                                                                        {"CellData", "awkward_cells"},
+                                                                                        {"Points", "Points"},
+                                                                                        {"Cells", "connectivity"},
+                                                                                        {"Cells", "offsets"},
+                                                                                        {"Cells", "types"}})
       EXPECT_EQ(find_array(vtu, section, name).format, encoding.at(format)) << name;
     const bool appended = format == VtuFormat::Binary || format == VtuFormat::Zlib;
     EXPECT_EQ(vtu.find("<AppendedData") != std::string::npos, appended);
@@ -571,7 +603,9 @@ TEST_F(VtuWriterTest, AsciiAndBinaryFilesHoldTheSameArrays) {
     files[format] = read_text(path);
   }
   const std::vector<std::pair<std::string, std::vector<std::string>>> sections = {
-      {"PointData", {"u", "at_nodes"}}, {"CellData", {"at_cells"}}, {"Points", {"Points"}},
+      {"PointData", {"u", "at_nodes"}},
+      {"CellData", {"at_cells"}},
+      {"Points", {"Points"}},
       {"Cells", {"connectivity", "offsets", "types"}}};
   for (const auto& [section, names] : sections) {
     for (const VtuFormat format : kFormats) EXPECT_EQ(testing::array_names(files[format], section), names);
@@ -605,8 +639,9 @@ TEST_F(VtuWriterTest, RawAppendedArraysFollowOneAnotherWithTheirByteCounts) {
   const size_t data = vtu.find('_', vtu.find("<AppendedData")) + 1;
   std::uint64_t expected_offset = 0;
   const std::vector<std::pair<std::string, std::uint64_t>> in_file_order = {
-      {"a", 16 * mesh->num_nodes()}, {"b", 8 * mesh->num_cells()}, {"Points", 24 * mesh->num_nodes()},
-      {"connectivity", 24 * mesh->num_cells()}, {"offsets", 8 * mesh->num_cells()}, {"types", mesh->num_cells()}};
+      {"a", 16 * mesh->num_nodes()},      {"b", 8 * mesh->num_cells()},
+      {"Points", 24 * mesh->num_nodes()}, {"connectivity", 24 * mesh->num_cells()},
+      {"offsets", 8 * mesh->num_cells()}, {"types", mesh->num_cells()}};
   for (const auto& [name, bytes] : in_file_order) {
     const size_t at = xml.find("Name=\"" + name + "\"");
     ASSERT_NE(at, std::string::npos) << name;
@@ -710,8 +745,7 @@ TEST_F(VtuWriterTest, RejectsWrongSizes) {
                           {"'v'", "different mesh"});
 
   writer.add_point_data("once", 1, std::vector<double>(6));
-  expect_error_containing([&] { writer.add_point_data("once", 1, std::vector<double>(6)); },
-                          {"'once'", "twice"});
+  expect_error_containing([&] { writer.add_point_data("once", 1, std::vector<double>(6)); }, {"'once'", "twice"});
 }
 
 TEST_F(VtuWriterTest, ThrowsNamingAnUnwritablePath) {

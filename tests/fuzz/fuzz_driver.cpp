@@ -116,7 +116,7 @@ void install_handlers() {
   alternate.ss_sp = stack.data();
   alternate.ss_size = stack.size();
   ::sigaltstack(&alternate, nullptr);
-  struct sigaction action{};
+  struct sigaction action {};
   action.sa_handler = on_signal;
   action.sa_flags = SA_ONSTACK;
 #ifdef PIEZOCONTACT_FUZZ_ASAN
@@ -187,20 +187,74 @@ void collect_paths(const ordered_json& value, const std::string& path, std::vect
 // ---------------------------------------------------------------------------------------------------------
 // Mutations
 
-const std::vector<std::string> extreme_values = {
-    "1e400", "-1e400", "1e-400", "1e308", "-1e308", "1.7976931348623157e308", "5e-324", "0", "-0", "-1", "-1e9",
-    "0.5", "-0.5", "1e-300", "2147483647", "2147483648", "-2147483649", "4294967296", "9007199254740993",
-    "18446744073709551616", "1e9", "1e6", "100000", "nan", "NaN", "-nan", "inf", "-inf", "Infinity", "\"nan\"",
-    "\"inf\"", "\"\"", "\"1e12\"", "\"../../escaped\"", "\"a\\u0000b\"", "\"\\ud800\"", "\"\xff\xfe\"", "true",
-    "false", "null", "[]", "{}", "[[]]", "[[1]]", "[1e308,1e308]", "[-1,-1]", "[0,0]", "[0,0,0]",
-    "[0,1e12,3]", "{\"type\":\"conductive\"}", "\"P2\"", "\"box\"", "\"rectangle\"", "\"quadrilateral\"",
-    "\"tetrahedron\"", "\"hexahedron\"", "2", "3", "0.0", "1"};
+const std::vector<std::string> extreme_values = {"1e400",
+                                                 "-1e400",
+                                                 "1e-400",
+                                                 "1e308",
+                                                 "-1e308",
+                                                 "1.7976931348623157e308",
+                                                 "5e-324",
+                                                 "0",
+                                                 "-0",
+                                                 "-1",
+                                                 "-1e9",
+                                                 "0.5",
+                                                 "-0.5",
+                                                 "1e-300",
+                                                 "2147483647",
+                                                 "2147483648",
+                                                 "-2147483649",
+                                                 "4294967296",
+                                                 "9007199254740993",
+                                                 "18446744073709551616",
+                                                 "1e9",
+                                                 "1e6",
+                                                 "100000",
+                                                 "nan",
+                                                 "NaN",
+                                                 "-nan",
+                                                 "inf",
+                                                 "-inf",
+                                                 "Infinity",
+                                                 "\"nan\"",
+                                                 "\"inf\"",
+                                                 "\"\"",
+                                                 "\"1e12\"",
+                                                 "\"../../escaped\"",
+                                                 "\"a\\u0000b\"",
+                                                 "\"\\ud800\"",
+                                                 "\"\xff\xfe\"",
+                                                 "true",
+                                                 "false",
+                                                 "null",
+                                                 "[]",
+                                                 "{}",
+                                                 "[[]]",
+                                                 "[[1]]",
+                                                 "[1e308,1e308]",
+                                                 "[-1,-1]",
+                                                 "[0,0]",
+                                                 "[0,0,0]",
+                                                 "[0,1e12,3]",
+                                                 "{\"type\":\"conductive\"}",
+                                                 "\"P2\"",
+                                                 "\"box\"",
+                                                 "\"rectangle\"",
+                                                 "\"quadrilateral\"",
+                                                 "\"tetrahedron\"",
+                                                 "\"hexahedron\"",
+                                                 "2",
+                                                 "3",
+                                                 "0.0",
+                                                 "1"};
 
-const std::vector<std::string> path_breakers = {"..", ".", "[", "]", "[-1]", "[99999999999999999999]", "[0]",
-                                                "[1]", "[+1]", "[ 1]", "[]", "[0]x", "=", "==", " ", "\n"};
+const std::vector<std::string> path_breakers = {"..",  ".",   "[",    "]",    "[-1]", "[99999999999999999999]",
+                                                "[0]", "[1]", "[+1]", "[ 1]", "[]",   "[0]x",
+                                                "=",   "==",  " ",    "\n"};
 
-const std::vector<std::string> json_tokens = {"{", "}", "[", "]", "\"", ":", ",", "\\", "\\u", "null", "true",
-                                              "-", "e", "E", ".", "\"k\":", "{\"\":1}", "\xc3", "\xed\xa0\x80"};
+const std::vector<std::string> json_tokens = {"{",  "}",      "[",        "]",    "\"",          ":", ",",
+                                              "\\", "\\u",    "null",     "true", "-",           "e", "E",
+                                              ".",  "\"k\":", "{\"\":1}", "\xc3", "\xed\xa0\x80"};
 
 class Mutator {
  public:
@@ -232,8 +286,10 @@ class Mutator {
   static std::size_t nesting_depth(const std::string& s) {
     std::size_t depth = 0, deepest = 0;
     for (char c : s) {
-      if (c == '[' || c == '{') deepest = std::max(deepest, ++depth);
-      else if ((c == ']' || c == '}') && depth > 0) --depth;
+      if (c == '[' || c == '{')
+        deepest = std::max(deepest, ++depth);
+      else if ((c == ']' || c == '}') && depth > 0)
+        --depth;
     }
     return deepest;
   }
@@ -353,8 +409,10 @@ class Mutator {
         ordered_json& number = *pick(numbers);
         static const std::vector<double> factors = {-1, 0, 0.5, 2, 10, 1e3, 1e-3, 1e100, 1e-100};
         const double scaled = number.get<double>() * pick(factors);
-        if (number.is_number_integer() && std::abs(scaled) < 1e15) number = static_cast<long long>(scaled);
-        else number = scaled;
+        if (number.is_number_integer() && std::abs(scaled) < 1e15)
+          number = static_cast<long long>(scaled);
+        else
+          number = scaled;
         return doc.dump();
       }
       case 0:
@@ -375,8 +433,10 @@ class Mutator {
           if (n->is_structured() && !n->empty()) containers.push_back(n);
         if (containers.empty()) return doc.dump();
         ordered_json& c = *pick(containers);
-        if (c.is_object()) c.erase(std::next(c.begin(), std::ptrdiff_t(below(c.size()))).key());
-        else c.erase(below(c.size()));
+        if (c.is_object())
+          c.erase(std::next(c.begin(), std::ptrdiff_t(below(c.size()))).key());
+        else
+          c.erase(below(c.size()));
         return doc.dump();
       }
       case 4: {  // an unknown key, or a key that is there twice (text level: ordered_json keeps one)
@@ -402,16 +462,18 @@ class Mutator {
         return doc.dump();
       case 6:  // an array grown or emptied
         if (node.is_array() && !node.empty()) {
-          if (chance(50)) node = ordered_json::array();
-          else for (std::size_t i = 0, n = below(64); i < n; ++i) node.push_back(node[below(node.size())]);
+          if (chance(50))
+            node = ordered_json::array();
+          else
+            for (std::size_t i = 0, n = below(64); i < n; ++i) node.push_back(node[below(node.size())]);
         } else {
           node = ordered_json::array({node, node});
         }
         return doc.dump();
       default: {  // a value of another type
-        static const std::vector<ordered_json> others = {nullptr, true, "text", ordered_json::array(),
-                                                         ordered_json::object(), -1, 0, 1e300,
-                                                         ordered_json::array({1, 2, 3})};
+        static const std::vector<ordered_json> others = {
+            nullptr, true, "text", ordered_json::array(),         ordered_json::object(),
+            -1,      0,    1e300,  ordered_json::array({1, 2, 3})};
         node = pick(others);
         return doc.dump();
       }
@@ -439,8 +501,10 @@ std::string outcome_signature() {
   std::string signature;
   bool quoted = false;
   for (char c : o.message.substr(0, 160)) {
-    if (c == '\'') quoted = !quoted;
-    else if (!quoted && !std::isdigit(static_cast<unsigned char>(c))) signature += c;
+    if (c == '\'')
+      quoted = !quoted;
+    else if (!quoted && !std::isdigit(static_cast<unsigned char>(c)))
+      signature += c;
   }
   return signature;
 }
@@ -469,17 +533,28 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) std::exit(usage());
       return argv[++i];
     };
-    if (arg == "--expect-refusal") expect_refusal = true;
-    else if (arg == "--expect-loaded") expect_loaded = true;
-    else if (arg == "--containing") containing.push_back(value());
-    else if (arg == "--seconds") seconds = std::stod(value());
-    else if (arg == "--iterations") iterations = std::stoull(value());
-    else if (arg == "--seed") seed = std::stoull(value());
-    else if (arg == "--max-len") max_len = std::stoull(value());
-    else if (arg == "--timeout") timeout_seconds = unsigned(std::stoul(value()));
-    else if (arg == "--paths-from") paths_from.push_back(value());
-    else if (arg.rfind("--", 0) == 0) return usage();
-    else inputs.push_back(arg);
+    if (arg == "--expect-refusal")
+      expect_refusal = true;
+    else if (arg == "--expect-loaded")
+      expect_loaded = true;
+    else if (arg == "--containing")
+      containing.push_back(value());
+    else if (arg == "--seconds")
+      seconds = std::stod(value());
+    else if (arg == "--iterations")
+      iterations = std::stoull(value());
+    else if (arg == "--seed")
+      seed = std::stoull(value());
+    else if (arg == "--max-len")
+      max_len = std::stoull(value());
+    else if (arg == "--timeout")
+      timeout_seconds = unsigned(std::stoul(value()));
+    else if (arg == "--paths-from")
+      paths_from.push_back(value());
+    else if (arg.rfind("--", 0) == 0)
+      return usage();
+    else
+      inputs.push_back(arg);
   }
   if (inputs.empty()) return usage();
   const std::string target = std::filesystem::path(argv[0]).filename().string();
@@ -559,10 +634,11 @@ int main(int argc, char** argv) {
     refused += pc::fuzz::last_outcome().refused ? 1 : 0;
     if (signatures.insert(outcome_signature()).second && pool.size() < max_pool) pool.push_back(input);
   }
-  std::printf("fuzz %s: %llu inputs in %.1f s (seed %llu): %llu refused, %llu loaded, %zu distinct outcomes, "
-              "slowest input %.2f s; no finding\n",
-              target.c_str(), static_cast<unsigned long long>(n), elapsed(), static_cast<unsigned long long>(seed),
-              static_cast<unsigned long long>(refused), static_cast<unsigned long long>(n - refused), signatures.size(),
-              slowest);
+  std::printf(
+      "fuzz %s: %llu inputs in %.1f s (seed %llu): %llu refused, %llu loaded, %zu distinct outcomes, "
+      "slowest input %.2f s; no finding\n",
+      target.c_str(), static_cast<unsigned long long>(n), elapsed(), static_cast<unsigned long long>(seed),
+      static_cast<unsigned long long>(refused), static_cast<unsigned long long>(n - refused), signatures.size(),
+      slowest);
   return 0;
 }

@@ -27,8 +27,7 @@ Outcome& last_outcome();
 
 // Runs `action` on the input under the contract above; `target` names the finding. Returns 0, as
 // LLVMFuzzerTestOneInput must.
-template <class Action>
-int run_contract(const char* target, Action&& action) {
+template <class Action> int run_contract(const char* target, Action&& action) {
   Outcome& outcome = last_outcome();
   outcome = Outcome{};
   try {

@@ -15,8 +15,8 @@ namespace {
 
 // gmsh reads files only: one per process, rewritten for every input and removed at exit.
 struct InputFile {
-  std::string path = (std::filesystem::temp_directory_path() /
-                      ("piezocontact_fuzz_" + std::to_string(::getpid()) + ".msh")).string();
+  std::string path =
+      (std::filesystem::temp_directory_path() / ("piezocontact_fuzz_" + std::to_string(::getpid()) + ".msh")).string();
   ~InputFile() {
     std::error_code ignored;
     std::filesystem::remove(path, ignored);

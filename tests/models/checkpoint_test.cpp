@@ -83,7 +83,10 @@ class ResumedRun : public ::testing::TestWithParam<Choice> {};
 TEST_P(ResumedRun, EndsWithExactlyTheUninterruptedState) {
   NewtonSolver newton;
   PiezoContactModel whole = paper_model(GetParam());
-  { const RunSummary s = Stepper(twelve_steps()).run(*whole.model, *whole.scheme, newton); ASSERT_TRUE(s.completed) << s.message; }
+  {
+    const RunSummary s = Stepper(twelve_steps()).run(*whole.model, *whole.scheme, newton);
+    ASSERT_TRUE(s.completed) << s.message;
+  }
 
   // Stopped after 5 step attempts: the checkpoint callback is given the state at the stop.
   PiezoContactModel first = paper_model(GetParam());

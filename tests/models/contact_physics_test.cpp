@@ -133,7 +133,8 @@ struct Column {
 // Elasticity, pressure on top, roller on the left, and the given contact brick on the bottom;
 // quasi-static (no inertia, no viscosity).
 // `constants`: the contact law's parameters, which the contact brick reads from the model.
-std::unique_ptr<Column> make_column(const ColumnSetup& s, std::shared_ptr<Brick> contact, const ParameterValues& constants) {
+std::unique_ptr<Column> make_column(const ColumnSetup& s, std::shared_ptr<Brick> contact,
+                                    const ParameterValues& constants) {
   auto c = std::make_unique<Column>();
   c->mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {s.W, s.H}, s.nx, s.ny, s.shape));
   c->model = std::make_unique<Model>(c->mesh);
@@ -188,8 +189,8 @@ TEST(CompressionColumn, LinearComplianceGivesTheClosedFormToRoundOff) {
       ColumnSetup s;
       s.shape = shape;
       s.poisson = poisson;
-      auto column =
-          make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>("bottom"), law_values(NormalCompliance{c, 1, 0}));
+      auto column = make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>("bottom"),
+                                law_values(NormalCompliance{c, 1, 0}));
       NewtonSolver newton;
       const RunSummary run = Stepper(one_static_step()).run(*column->model, column->scheme, newton);
       ASSERT_TRUE(run.completed) << run.message;
@@ -213,8 +214,8 @@ TEST(CompressionColumn, QuadraticComplianceConvergesToTheClosedForm) {
   const double c = 5;
   ColumnSetup s;
   s.poisson = 0.3;
-  auto column =
-      make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>("bottom"), law_values(NormalCompliance{c, 2, 0}));
+  auto column = make_column(s, std::make_shared<NormalResponseBrick<NormalCompliance>>("bottom"),
+                            law_values(NormalCompliance{c, 2, 0}));
   Model& m = *column->model;
   // At u_nu = 0 the law's slope 2 c u_nu vanishes and the column floats: start Newton from a guess in
   // contact, deeper than the solution (v = u for one step of size 1 from u_prev = 0).
@@ -253,8 +254,8 @@ TEST(DampedColumn, SinksAtTheSpeedPressureOverDampingExactly) {
   const double c_nu = 4;
   ColumnSetup s;
   s.poisson = 0.25;
-  auto column =
-      make_column(s, std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom"), law_values(LinearDampedResponse{c_nu}));
+  auto column = make_column(s, std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom"),
+                            law_values(LinearDampedResponse{c_nu}));
   StepperOptions o = one_static_step();
   o.end = 0.5;
   o.step = 0.1;
@@ -471,14 +472,15 @@ TEST(ConductiveFoundation, ZeroConductanceInsulates) {
 using ViscousKernel = FrictionKernel<ViscousFriction>;
 
 std::shared_ptr<Brick> generic_viscous_friction(double c_tau) {
-  return std::make_shared<WeakFormBrick<ViscousKernel>>(WeakForm{.name = "viscous friction (generic)",
-                                                                 .fields = {{"v"}},
-                                                                 .tests = {"v"},
-                                                                 .couplings = {{"v", "v"}},
-                                                                 .region = "bottom",
-                                                                 .integration = Integration::Faces,
-                                                                 .linear = false},
-                                                        ViscousKernel{std::make_shared<const ViscousFriction>(ViscousFriction{c_tau}), nullptr, 0});
+  return std::make_shared<WeakFormBrick<ViscousKernel>>(
+      WeakForm{.name = "viscous friction (generic)",
+               .fields = {{"v"}},
+               .tests = {"v"},
+               .couplings = {{"v", "v"}},
+               .region = "bottom",
+               .integration = Integration::Faces,
+               .linear = false},
+      ViscousKernel{std::make_shared<const ViscousFriction>(ViscousFriction{c_tau}), nullptr, 0});
 }
 
 struct FrictionPair {
@@ -530,8 +532,8 @@ TEST(CachedVersusGeneric, LinearFrictionThroughBothPathsIsIdentical) {
   auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
   const double c_tau = 0.8;
   for (const bool with_bulk : {false, true}) {
-    auto cached = friction_model(mesh, with_bulk, std::make_shared<FrictionBrick<ViscousFriction>>("bottom"),
-                                 {{"c_tau", c_tau}});
+    auto cached =
+        friction_model(mesh, with_bulk, std::make_shared<FrictionBrick<ViscousFriction>>("bottom"), {{"c_tau", c_tau}});
     auto generic = friction_model(mesh, with_bulk, generic_viscous_friction(c_tau));
     ASSERT_TRUE(cached.model->bricks()[cached.friction]->linear());
     ASSERT_FALSE(generic.model->bricks()[generic.friction]->linear());

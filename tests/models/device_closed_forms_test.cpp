@@ -75,8 +75,7 @@ struct Bar {
   PiezoContactModel build(bool blocked) const {
     const PiezoTensors t = material.tensors(3, Axis::z);
     PiezoContactSpec spec;
-    spec.mesh = std::make_shared<const Mesh>(
-        box_mesh({0, 0, 0}, {side, side, height}, 2, 2, 2, Shape::Tetrahedron));
+    spec.mesh = std::make_shared<const Mesh>(box_mesh({0, 0, 0}, {side, side, height}, 2, 2, 2, Shape::Tetrahedron));
     spec.B = t.B;
     spec.E = t.E;
     spec.beta = t.beta;
@@ -151,21 +150,23 @@ TEST(DeviceClosedForms, ClampedBodyFeelsTheGapAndTheSlipOfAMovingFoundation) {
   spec.normal = {"normal_compliance", {{"c_nu", c_nu}}};
   spec.friction = {"coulomb", {{"mu", kMu}, {"eps", eps}}};
   // Along the surface at a constant speed, into it along a table: 0 until 0.1 s, v_into after 0.2 s.
-  spec.foundation_motion =
-      moving(TimeFunction::constant(v_along), TimeFunction::table({{0.1, 0}, {0.2, v_into}}));
+  spec.foundation_motion = moving(TimeFunction::constant(v_along), TimeFunction::table({{0.1, 0}, {0.2, v_into}}));
   PiezoContactModel built = build_piezo_contact_model(spec);
   EXPECT_TRUE(built.normal->time_dependent());
   int checked = 0;
   run(built, end, 5, [&](const Model& m) {
     const double t = m.time();
     // U_f,y = the table's integral: 0 up to 0.1, the ramp's area, then v_into per second.
-    const double rise = t <= 0.1 ? 0 : t <= 0.2 ? v_into * (t - 0.1) * (t - 0.1) / (2 * 0.1) : v_into * (0.05 + t - 0.2);
+    const double rise = t <= 0.1   ? 0
+                        : t <= 0.2 ? v_into * (t - 0.1) * (t - 0.1) / (2 * 0.1)
+                                   : v_into * (0.05 + t - 0.2);
     const double p = c_nu * rise;  // the body does not move: all of the foundation's rise is overlap
     const double friction = kMu * p * v_along / std::sqrt(v_along * v_along + eps * eps);
     const double scale = c_nu * v_into * end * kLength;
     EXPECT_NEAR(reaction(m, "v", "bottom", 1), -p * kLength, 1e-12 * scale) << "t = " << t;
     EXPECT_NEAR(reaction(m, "v", "bottom", 0), -friction * kLength, 1e-12 * scale) << "t = " << t;
-    for (double pressure : pressure_at_contact_nodes(*built.normal, m.space("v"), built.contact_nodes, m.values("u"), t))
+    for (double pressure :
+         pressure_at_contact_nodes(*built.normal, m.space("v"), built.contact_nodes, m.values("u"), t))
       EXPECT_NEAR(pressure, p, 1e-12 * scale);
     ++checked;
   });
@@ -193,8 +194,8 @@ TEST(DeviceClosedForms, BlockPressedOnAMovingFoundationFeelsMuP) {
     PiezoContactSpec spec = mechanical_block();
     spec.normal = {"normal_compliance", {{"c_nu", c_nu}}};
     spec.friction = {"coulomb", {{"mu", kMu}, {"eps", eps}}};
-    spec.tractions = {{"top", [=](const double*, double, double* out) { out[0] = 0, out[1] = -pressure; },
-                       LoadTime::Constant}};
+    spec.tractions = {
+        {"top", [=](const double*, double, double* out) { out[0] = 0, out[1] = -pressure; }, LoadTime::Constant}};
     spec.foundation_motion = moving(TimeFunction::constant(v_along), TimeFunction::constant(0));
     // Held by its top along x: the holder's reaction is the friction the foundation drags it with.
     spec.extra_bricks = [](Model& m) {
@@ -211,7 +212,8 @@ TEST(DeviceClosedForms, BlockPressedOnAMovingFoundationFeelsMuP) {
     // along x, so the slip is the foundation's: the drag is mu p L V / sqrt(V^2 + eps^2), which is mu p L
     // as eps / V -> 0.
     const double drag = kMu * pressure * kLength * v_along / std::sqrt(v_along * v_along + eps * eps);
-    for (size_t n = 6; n < holder.size(); ++n) EXPECT_NEAR(holder[n], -drag, 1e-9 * drag) << "eps " << eps << " step " << n;
+    for (size_t n = 6; n < holder.size(); ++n)
+      EXPECT_NEAR(holder[n], -drag, 1e-9 * drag) << "eps " << eps << " step " << n;
     // The foundation's resultant on the block: the drag along its motion, the pressure's force up.
     EXPECT_NEAR(resultant.force[0], drag, 1e-9 * drag);
     EXPECT_NEAR(resultant.force[1], pressure * kLength, 1e-9 * pressure * kLength);

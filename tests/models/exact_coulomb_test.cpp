@@ -51,8 +51,8 @@ TEST(ExactCoulomb, TangentMatchesFiniteDifferencesStickingSlidingAndAcross) {
     normal->update(data);
     // The multiplier's range against mu p decides the branch: small, the nodes stick (|z| < g); large,
     // they slip; in between, both.
-    for (const auto& [regime, range, r] : {std::tuple{"sticking", 0.01, 0.01}, std::tuple{"sliding", 5.0, 3.0},
-                                           std::tuple{"across", 1.0, 0.5}}) {
+    for (const auto& [regime, range, r] :
+         {std::tuple{"sticking", 0.01, 0.01}, std::tuple{"sliding", 5.0, 3.0}, std::tuple{"across", 1.0, 0.5}}) {
       data.set("r", r);
       AlartCurnierFrictionBrick<> brick("bottom", normal);
       setup.ranges["lambda_tau"] = {-range, range};
@@ -72,9 +72,9 @@ TEST(ExactCoulomb, FrictionOfAnotherFoundationMotionThanItsNormalBrickIsRefused)
   motion->velocity[0] = TimeFunction::constant(1);
   moving.motion = motion;
   const auto at_rest = std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom");
-  for (const auto& make : std::vector<std::function<void()>>{
-           [&] { AlartCurnierFrictionBrick<>("bottom", at_rest, moving); },
-           [&] { FrictionBrick<RegularizedCoulomb>("bottom", at_rest, moving); }}) {
+  for (const auto& make :
+       std::vector<std::function<void()>>{[&] { AlartCurnierFrictionBrick<>("bottom", at_rest, moving); },
+                                          [&] { FrictionBrick<RegularizedCoulomb>("bottom", at_rest, moving); }}) {
     try {
       make();
       ADD_FAILURE() << "a friction brick of another motion than its normal brick was accepted";
@@ -83,8 +83,8 @@ TEST(ExactCoulomb, FrictionOfAnotherFoundationMotionThanItsNormalBrickIsRefused)
           << e.what();
     }
   }
-  EXPECT_NO_THROW(AlartCurnierFrictionBrick<>("bottom", std::make_shared<NormalResponseBrick<LinearDampedResponse>>(
-                                                            "bottom", moving), moving));
+  EXPECT_NO_THROW(AlartCurnierFrictionBrick<>(
+      "bottom", std::make_shared<NormalResponseBrick<LinearDampedResponse>>("bottom", moving), moving));
 }
 
 PiezoContactSpec block(Choice friction) {
@@ -109,8 +109,8 @@ TEST(ExactCoulomb, BlockHeldOnASlidingFoundationFeelsExactlyMuPWhateverR) {
   // narrow one (3e-6 m/s).
   for (double r : {1e5, 1e10}) {
     PiezoContactSpec spec = block({"coulomb_exact", {{"mu", kMu}, {"r", r}}});
-    spec.tractions = {{"top", [=](const double*, double, double* out) { out[0] = 0, out[1] = -pressure; },
-                       LoadTime::Constant}};
+    spec.tractions = {
+        {"top", [=](const double*, double, double* out) { out[0] = 0, out[1] = -pressure; }, LoadTime::Constant}};
     auto motion = std::make_shared<FoundationMotion>();
     motion->velocity[0] = TimeFunction::constant(v_along);
     spec.foundation_motion = motion;
@@ -147,8 +147,8 @@ std::vector<double> contact_slip_speeds(Choice friction, double* friction_force)
   PiezoContactSpec spec = block(std::move(friction));
   spec.rho = 2000;
   spec.A = isotropic_stiffness_from_young(2, 1e5, 0.3);  // Kelvin-Voigt: the block's vibration settles
-  spec.tractions = {{"top", [=](const double*, double, double* out) { out[0] = push, out[1] = -pressure; },
-                     LoadTime::Constant}};
+  spec.tractions = {
+      {"top", [=](const double*, double, double* out) { out[0] = push, out[1] = -pressure; }, LoadTime::Constant}};
   PiezoContactModel built = build_piezo_contact_model(spec);
   std::vector<double> fastest;
   run(built, 1e-2, 4, [&](const Model& m) {
@@ -192,8 +192,8 @@ TEST(ExactCoulomb, CondensedPathsAgreeWithTheFullSolveThoughTheMultiplierIsNotIn
     PiezoContactSpec spec = block({"coulomb_exact", {{"mu", kMu}, {"r", 1e5}}});
     spec.order = 2;
     spec.rho = 2000;
-    spec.tractions = {{"top", [](const double*, double, double* out) { out[0] = 500, out[1] = -1e5; },
-                       LoadTime::Constant}};
+    spec.tractions = {
+        {"top", [](const double*, double, double* out) { out[0] = 500, out[1] = -1e5; }, LoadTime::Constant}};
     auto motion = std::make_shared<FoundationMotion>();
     motion->velocity[0] = TimeFunction::table({{0, 0}, {4e-3, 0}, {6e-3, 0.02}});
     spec.foundation_motion = motion;

@@ -39,12 +39,12 @@ Scene coarse(const std::vector<std::string>& overrides) {
   return load_scene_file(kScene, all);
 }
 
-
 // Every number a run reports, by name, to say which one is not finite.
 std::vector<std::pair<const char*, double>> numbers(const FoundationRunResult& r) {
-  return {{"wall_seconds", r.wall_seconds}, {"max_abs_ux", r.max_abs_ux}, {"max_abs_uy", r.max_abs_uy},
-          {"phi_min", r.phi_min},           {"phi_max", r.phi_max},       {"uy_corner", r.uy_corner},
-          {"ux_corner", r.ux_corner},       {"phi_center", r.phi_center}, {"max_abs_vtau_contact", r.max_abs_vtau_contact}};
+  return {
+      {"wall_seconds", r.wall_seconds}, {"max_abs_ux", r.max_abs_ux}, {"max_abs_uy", r.max_abs_uy},
+      {"phi_min", r.phi_min},           {"phi_max", r.phi_max},       {"uy_corner", r.uy_corner},
+      {"ux_corner", r.ux_corner},       {"phi_center", r.phi_center}, {"max_abs_vtau_contact", r.max_abs_vtau_contact}};
 }
 
 // A run that writes its tables into a scratch directory, removed afterwards; gamma_c() reads the contact
@@ -125,8 +125,8 @@ TEST(Extremes, ZeroConductanceIsTheInsulatedFoundation) {
 TEST(Extremes, HugeConductanceImposesTheFoundationPotential) {
   for (const char* steps : {"time.steps=10", "time.steps=1"}) {
     for (const double phi_f : {-48.0, 1e5}) {
-      const Scene scene = coarse({"foundation.conductive.k_e=1e15", steps,
-                                  "foundation.conductive.phi_f=" + std::to_string(phi_f)});
+      const Scene scene =
+          coarse({"foundation.conductive.k_e=1e15", steps, "foundation.conductive.phi_f=" + std::to_string(phi_f)});
       const TableRun run(scene, "conductive", "k_e_1e15");
       ASSERT_TRUE(run.result.completed) << steps << ", phi_f = " << phi_f << ": " << run.result.message;
       const auto rows = run.gamma_c();
@@ -187,8 +187,8 @@ TEST(Extremes, CondensedSolveMatchesTheFullOneAtTheStiffestContact) {
   for (const char* steps : {"time.steps=10", "time.steps=1"})
     for (const char* method : {"schur", "columns"}) {
       const std::string where = std::string(steps) + ", " + method;
-      const Scene condensed =
-          coarse({"contact.c_nu=1e16", steps, "solver.condensed=true", "solver.condensation=\"" + std::string(method) + "\""});
+      const Scene condensed = coarse(
+          {"contact.c_nu=1e16", steps, "solver.condensed=true", "solver.condensation=\"" + std::string(method) + "\""});
       const Scene full = coarse({"contact.c_nu=1e16", steps, "solver.condensed=false"});
       for (const std::string name : {"insulated", "conductive"}) {
         const FoundationRunResult a = run_foundation(condensed, find_foundation(condensed, name), "", false);

@@ -68,8 +68,8 @@ struct CompressedBar {
                        LoadTime::Constant}};
     spec.extra_bricks = [](Model& m) {
       for (int axis = 0; axis < 3; ++axis)
-        m.add_brick(std::make_shared<DirichletBrick>(
-            DirichletBrick::clamp("v", std::string(1, "xyz"[axis]) + "min", {axis})));
+        m.add_brick(
+            std::make_shared<DirichletBrick>(DirichletBrick::clamp("v", std::string(1, "xyz"[axis]) + "min", {axis})));
     };
     return build_piezo_contact_model(spec);
   }
@@ -97,8 +97,7 @@ TEST(FloatingElectrode, OpenCircuitBarShowsTheSensorVoltageAndTheOpenCircuitComp
   const double k33_squared = 1 - s_open / s_short;
   EXPECT_NEAR(k33_squared, 0.75 * 0.75, 0.05) << "PZT-5H's datasheet k33 is 0.75";
   // Open, the electrode holds no charge: its one equation is the sum of the region's residuals.
-  EXPECT_NEAR(electrode_charge(*open.model, "zmax"), 0,
-              1e-9 * std::abs(electrode_charge(*shorted.model, "zmax")));
+  EXPECT_NEAR(electrode_charge(*open.model, "zmax"), 0, 1e-9 * std::abs(electrode_charge(*shorted.model, "zmax")));
 }
 
 TEST(FloatingElectrode, OverAGroundedRegionIsRefusedNamingBoth) {

@@ -31,8 +31,8 @@ const TimeProfile kTime = testing::sine_profile();
 constexpr int kSteps = 40;
 
 testing::PiezoMmsProblem problem_on(std::shared_ptr<const Mesh> mesh, const PiezoMmsExact& exact) {
-  return testing::build_piezo_mms_problem(mesh, 1, exact, PiezoMmsPhysics{true, true}, std::make_unique<BackwardEuler>(),
-                                          kTime);
+  return testing::build_piezo_mms_problem(mesh, 1, exact, PiezoMmsPhysics{true, true},
+                                          std::make_unique<BackwardEuler>(), kTime);
 }
 
 // Steps from `from` (the model already there, unless it is the start) to `to`.
@@ -107,11 +107,13 @@ TEST(MeshTransfer, AnotherModelIsRefused) {
   const auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, 2, 2, Shape::Triangle));
   auto s = problem_on(mesh, exact);
   // Quasi-static: no acceleration, no history of the velocity.
-  auto other = testing::build_piezo_mms_problem(mesh, 1, exact, PiezoMmsPhysics{}, std::make_unique<BackwardEuler>(), kTime);
+  auto other =
+      testing::build_piezo_mms_problem(mesh, 1, exact, PiezoMmsPhysics{}, std::make_unique<BackwardEuler>(), kTime);
   std::vector<int> parents(mesh->num_cells());
   for (int c = 0; c < mesh->num_cells(); ++c) parents[c] = c;
-  testing::expect_error_containing([&] { transfer_model_state(*s.model, *s.scheme, *other.model, *other.scheme, parents); },
-                                   {"mesh transfer: the models have different fields"});
+  testing::expect_error_containing(
+      [&] { transfer_model_state(*s.model, *s.scheme, *other.model, *other.scheme, parents); },
+      {"mesh transfer: the models have different fields"});
 }
 
 }  // namespace

@@ -67,7 +67,8 @@ TEST(ModalAnalysis, ClampedFreeBarConvergesToTheLongitudinalFrequenciesAtTheElem
     }
     for (size_t k = 1; k < errors.size(); ++k) {
       const double rate = std::log2(errors[k - 1] / errors[k]);
-      std::printf("P%d third frequency: relative error %.3e -> %.3e, rate %.2f\n", order, errors[k - 1], errors[k], rate);
+      std::printf("P%d third frequency: relative error %.3e -> %.3e, rate %.2f\n", order, errors[k - 1], errors[k],
+                  rate);
       EXPECT_NEAR(rate, 2.0 * order, 0.25) << "P" << order << " errors " << errors[k - 1] << " -> " << errors[k];
     }
   }

@@ -33,7 +33,8 @@ namespace {
 using ::testing::HasSubstr;
 
 struct Bulk {
-  std::shared_ptr<const Mesh> mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
+  std::shared_ptr<const Mesh> mesh =
+      std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {2, 1}, 6, 3, Shape::Triangle));
   std::unique_ptr<Model> model = std::make_unique<Model>(mesh);
   BackwardEuler scheme;
   int inertia = -1, viscosity = -1, elasticity = -1, piezo = -1, permittivity = -1, traction = -1;
@@ -339,8 +340,11 @@ TEST(Model, TheResidualsDerivativeAlongTheHistoryIsTheDifferenceOfItsResiduals) 
   EXPECT_EQ(untouched, Eigen::VectorXd::Constant(3, 7.0));
   m.assemble(false);
   EXPECT_TRUE(m.residual_derivative(direction, untouched));
-  EXPECT_THAT([&] { (void)m.residual_derivative({{"u", direction.at("u_prev")}}, untouched); },
-              ::testing::ThrowsMessage<Error>(HasSubstr("along 'u', which is not a data field")));
+  EXPECT_THAT(
+      [&] {
+        (void)m.residual_derivative({{"u", direction.at("u_prev")}}, untouched);
+      },
+      ::testing::ThrowsMessage<Error>(HasSubstr("along 'u', which is not a data field")));
 
   // A normal compliance reads u = k v + u_prev, nonlinearly: its residual is no product of blocks.
   Bulk compliant([](Model& model) {
@@ -413,9 +417,9 @@ TEST(Model, RefusesAParameterDeclaredByASecondBrickNamingBoth) {
   auto m = model_with_normal_response();
   m->set_constant("c_nu", 5.0);
   EXPECT_THAT([&] { m->add_brick(std::make_shared<BoundaryDashpotBrick>("top", "c_nu")); },
-              ::testing::ThrowsMessage<Error>(::testing::AllOf(
-                  HasSubstr("parameter 'c_nu'"), HasSubstr("brick 'normal response on bottom'"),
-                  HasSubstr("brick 'boundary dashpot (c_nu) on top'"))));
+              ::testing::ThrowsMessage<Error>(::testing::AllOf(HasSubstr("parameter 'c_nu'"),
+                                                               HasSubstr("brick 'normal response on bottom'"),
+                                                               HasSubstr("brick 'boundary dashpot (c_nu) on top'"))));
   EXPECT_EQ(m->bricks().size(), 1u) << "the refused brick is not in the model";
 }
 

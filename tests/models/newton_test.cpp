@@ -17,8 +17,7 @@ namespace pc {
 namespace {
 
 struct CyclingCubic {  // f0 = u^3 - 2u + 2, tested with u
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     const S& u = in.value[0][0];
     out.f0[0][0] = u * u * u - 2.0 * u + 2.0;
   }
@@ -87,8 +86,7 @@ TEST(NewtonGlobalisation, RejectsANegativeWatchdog) {
 // measure of convergence, so the solve is Diverged, naming the block, and never Converged (issue 11, case 1:
 // an infinite tolerance once declared every residual converged).
 struct OverflowingLoad {  // f0 = u - 1e300, tested with u
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     out.f0[0][0] = in.value[0][0] - 1e300;
   }
 };

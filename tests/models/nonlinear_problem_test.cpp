@@ -96,7 +96,12 @@ class SpringChain : public NonlinearProblem {
  public:
   // unheld: further nonlinear dofs that no spring holds (D is zero there: contact nodes out of contact).
   SpringChain(int n, bool anchored, std::vector<int> held, double cubic = 1, std::vector<int> unheld = {})
-      : n_(n), cubic_(cubic), x_(Eigen::VectorXd::Zero(n)), f_(Eigen::VectorXd::Zero(n)), held_(held), nonlinear_(std::move(held)) {
+      : n_(n),
+        cubic_(cubic),
+        x_(Eigen::VectorXd::Zero(n)),
+        f_(Eigen::VectorXd::Zero(n)),
+        held_(held),
+        nonlinear_(std::move(held)) {
     nonlinear_.insert(nonlinear_.end(), unheld.begin(), unheld.end());
     std::sort(nonlinear_.begin(), nonlinear_.end());
     std::vector<Eigen::Triplet<double>> entries;

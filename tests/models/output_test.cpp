@@ -15,15 +15,15 @@
 #include <regex>
 #include <sstream>
 
-#include "support/error_and_temp_dir.hpp"
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "bricks/voigt.hpp"
+#include "models/model.hpp"
 #include "models/output/boundary_table.hpp"
 #include "models/output/csv_log.hpp"
-#include "models/model.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
+#include "support/error_and_temp_dir.hpp"
 #include "support/piezo_material.hpp"
 #include "support/test_helpers.hpp"
 #include "support/vtu_reader.hpp"
@@ -75,8 +75,7 @@ TEST_F(OutputTest, ResultSeriesKeepsAValidCollectionOfExactlyTheWrittenSteps) {
   EXPECT_EQ(series.pvd_path(), (run / "body.pvd").string());
 
   const std::vector<int> steps = {0, 5, 10, 123456};
-  const std::vector<std::string> names = {"body_000000.vtu", "body_000005.vtu", "body_000010.vtu",
-                                          "body_123456.vtu"};
+  const std::vector<std::string> names = {"body_000000.vtu", "body_000005.vtu", "body_000010.vtu", "body_123456.vtu"};
   const std::vector<double> times = {0.0, 0.1, 0.1 + 0.2, 1.0 / 3.0};
   for (size_t k = 0; k < steps.size(); ++k) {
     EXPECT_EQ(series.write(steps[k], times[k], writer), (run / names[k]).string());
@@ -103,8 +102,10 @@ TEST_F(OutputTest, ResultSeriesWritesItsFilesInItsFormatAndItsCollectionListsThe
   for (size_t c = 0; c < ids.size(); ++c) ids[c] = 0.1 * double(c);
   VtuWriter writer(mesh);
   writer.add_cell_data("id", 1, ids);
-  const std::map<VtuFormat, std::string> encoding = {{VtuFormat::Ascii, "ascii"}, {VtuFormat::Base64, "binary"},
-                                                     {VtuFormat::Binary, "appended"}, {VtuFormat::Zlib, "appended"}};
+  const std::map<VtuFormat, std::string> encoding = {{VtuFormat::Ascii, "ascii"},
+                                                     {VtuFormat::Base64, "binary"},
+                                                     {VtuFormat::Binary, "appended"},
+                                                     {VtuFormat::Zlib, "appended"}};
   for (const auto& [format, array_format] : encoding) {
     SCOPED_TRACE(to_string(format));
     const fs::path run = directory_ / to_string(format);
@@ -212,8 +213,8 @@ TEST_F(OutputTest, AContinuedSeriesKeepsItsStepsPiecesAndClearsTheOthers) {
     EXPECT_FALSE(ResultSeries::is_step_file("s", name)) << name;
   ResultSeries series(directory_.string(), "s");
   series.continue_from({{0, 0.0}, {5, 0.5}});
-  for (const char* kept : {"s_000000.pvtu", "s_000000_0.vtu", "s_000000_1.vtu", "s_000005.vtu", "s_000010_.vtu",
-                           "s_000010_x.vtu"})
+  for (const char* kept :
+       {"s_000000.pvtu", "s_000000_0.vtu", "s_000000_1.vtu", "s_000005.vtu", "s_000010_.vtu", "s_000010_x.vtu"})
     EXPECT_TRUE(fs::exists(directory_ / kept)) << kept;
   for (const char* gone : {"s_000010.pvtu", "s_000010_0.vtu", "s_000010_1.vtu"})
     EXPECT_FALSE(fs::exists(directory_ / gone)) << gone;
@@ -288,8 +289,11 @@ TEST_F(OutputTest, WriteCsvWritesTheWholeTableAtomically) {
   EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
 
   // A bad table leaves the previous file as it was.
-  expect_error_containing([&] { write_csv(path.string(), {"x", "y"}, {{1, 2}, {3}}); },
-                          {path.string(), "1 values", "2 columns"});
+  expect_error_containing(
+      [&] {
+        write_csv(path.string(), {"x", "y"}, {{1, 2}, {3}});
+      },
+      {path.string(), "1 values", "2 columns"});
   EXPECT_EQ(read_lines(path), lines);
   EXPECT_FALSE(fs::exists(path.string() + ".tmp"));
 }
@@ -501,8 +505,8 @@ TEST_F(OutputTest, AddPiezoOutputWritesThePresentFields) {
     add_piezo_output(writer, *model);
     writer.write((directory_ / "piezo.vtu").string());
     const std::string text = read_text(directory_ / "piezo.vtu");
-    for (const char* name : {"v", "u", "phi", "strain", "stress", "von_mises", "electric_field",
-                             "electric_displacement"})
+    for (const char* name :
+         {"v", "u", "phi", "strain", "stress", "von_mises", "electric_field", "electric_displacement"})
       EXPECT_TRUE(has_array(text, name)) << name;
   }
   {

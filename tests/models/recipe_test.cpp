@@ -26,7 +26,6 @@ Scene paper(std::vector<std::string> overrides = {}) {
   return load_scene_file(kScene, overrides);
 }
 
-
 // The paper's spec with the foundation `name` ("insulated" or "conductive").
 PiezoContactSpec paper_spec(const std::string& name = "insulated") {
   const Scene scene = paper();
@@ -54,9 +53,9 @@ int total_dofs(const Model& m) {
 }
 
 // The bricks every variant of the paper's scene has: the mechanics, its boundary conditions and contact.
-const std::vector<std::string> kMechanical = {"elasticity (B) on all", "viscosity (A) on all",
-                                              "Dirichlet condition on v over left", "traction on top",
-                                              "normal response on bottom", "friction on bottom"};
+const std::vector<std::string> kMechanical = {
+    "elasticity (B) on all", "viscosity (A) on all",      "Dirichlet condition on v over left",
+    "traction on top",       "normal response on bottom", "friction on bottom"};
 const std::vector<std::string> kElectric = {"piezoelectric coupling (E) on all", "permittivity (beta) on all",
                                             "Dirichlet condition on phi over top"};
 const std::string kInertia = "inertia (rho) on all";
@@ -89,8 +88,8 @@ TEST(Recipe, InsulatedFoundationAddsThePotentialButNoFoundationBrick) {
   const Model& m = *built.model;
   EXPECT_TRUE(built.electric);
   EXPECT_THAT(brick_names(m), UnorderedElementsAreArray(kMechanical + kElectric + std::vector<std::string>{kInertia}));
-  EXPECT_EQ(fields(m), (std::map<std::string, FieldKind>{
-                           {"v", U}, {"phi", U}, {"u", A}, {"u_prev", D}, {"a", A}, {"v_prev", D}}));
+  EXPECT_EQ(fields(m),
+            (std::map<std::string, FieldKind>{{"v", U}, {"phi", U}, {"u", A}, {"u_prev", D}, {"a", A}, {"v_prev", D}}));
   EXPECT_THAT(m.unknowns(), ElementsAre("v", "phi"));
   EXPECT_EQ(total_dofs(m), 3 * m.mesh().num_nodes());
 }
@@ -100,8 +99,8 @@ TEST(Recipe, ConductiveFoundationAddsExactlyOneFoundationBrick) {
   const Model& m = *built.model;
   EXPECT_THAT(brick_names(m),
               UnorderedElementsAreArray(kMechanical + kElectric + std::vector<std::string>{kInertia, kFoundation}));
-  EXPECT_EQ(fields(m), (std::map<std::string, FieldKind>{
-                           {"v", U}, {"phi", U}, {"u", A}, {"u_prev", D}, {"a", A}, {"v_prev", D}}));
+  EXPECT_EQ(fields(m),
+            (std::map<std::string, FieldKind>{{"v", U}, {"phi", U}, {"u", A}, {"u_prev", D}, {"a", A}, {"v_prev", D}}));
   EXPECT_EQ(total_dofs(m), 3 * m.mesh().num_nodes());
 }
 
@@ -121,10 +120,11 @@ TEST(Recipe, FrictionNoneCreatesNoFrictionBrick) {
   spec.friction = {"none", {}};
   const PiezoContactModel built = build_piezo_contact_model(spec);
   const Model& m = *built.model;
-  EXPECT_THAT(brick_names(m), UnorderedElementsAreArray(std::vector<std::string>{
-                                  "elasticity (B) on all", "viscosity (A) on all", kInertia,
-                                  "Dirichlet condition on v over left", "traction on top", "normal response on bottom"} +
-                              kElectric));
+  EXPECT_THAT(brick_names(m),
+              UnorderedElementsAreArray(std::vector<std::string>{"elasticity (B) on all", "viscosity (A) on all",
+                                                                 kInertia, "Dirichlet condition on v over left",
+                                                                 "traction on top", "normal response on bottom"} +
+                                        kElectric));
 }
 
 TEST(Recipe, NoContactRegionCreatesNoContactBricks) {
@@ -132,10 +132,10 @@ TEST(Recipe, NoContactRegionCreatesNoContactBricks) {
   spec.contact.clear();
   const PiezoContactModel built = build_piezo_contact_model(spec);
   const Model& m = *built.model;
-  EXPECT_THAT(brick_names(m), UnorderedElementsAreArray(std::vector<std::string>{
-                                  "elasticity (B) on all", "viscosity (A) on all", kInertia,
-                                  "Dirichlet condition on v over left", "traction on top"} +
-                              kElectric));
+  EXPECT_THAT(brick_names(m), UnorderedElementsAreArray(
+                                  std::vector<std::string>{"elasticity (B) on all", "viscosity (A) on all", kInertia,
+                                                           "Dirichlet condition on v over left", "traction on top"} +
+                                  kElectric));
   EXPECT_TRUE(m.diagnostics().empty());
   EXPECT_EQ(built.normal, nullptr);
 }
@@ -158,9 +158,9 @@ TEST(Recipe, ZeroLoadsInASceneCreateNoSourceBricks) {
   EXPECT_TRUE(sources(zero).empty());
 
   const Scene loaded = paper({"loads.f0=[0, -1]", "loads.q0=1e-3", "loads.q_b=1e-4"});
-  EXPECT_THAT(sources(loaded), UnorderedElementsAreArray(std::vector<std::string>{
-                                   "body force on all", "volume charge on all", "surface charge on left",
-                                   "surface charge on right"}));
+  EXPECT_THAT(sources(loaded),
+              UnorderedElementsAreArray(std::vector<std::string>{"body force on all", "volume charge on all",
+                                                                 "surface charge on left", "surface charge on right"}));
 }
 
 }  // namespace

@@ -52,10 +52,11 @@ TEST(RecoveryEstimate, VanishesForAFieldTheSpaceHoldsExactly) {
       out[0] = 0.3 * x[0] - 0.2 * x[1] + (order == 2 ? 0.7 * x[0] * x[1] : 0.0);
       out[1] = 0.1 + 0.5 * x[1] + (order == 2 ? -0.4 * x[0] * x[0] : 0.0);
     });
-    const Eigen::VectorXd phi =
-        scalar_space.interpolate([&](const double* x, double* out) { out[0] = x[0] - 2 * x[1] + (order == 2 ? x[1] * x[1] : 0.0); });
+    const Eigen::VectorXd phi = scalar_space.interpolate(
+        [&](const double* x, double* out) { out[0] = x[0] - 2 * x[1] + (order == 2 ? x[1] * x[1] : 0.0); });
     const SpaceErrorField eu = recovery_error_estimate("u", vector_space, u, GradientMeasure::Strain, exact.m.B);
-    const SpaceErrorField ephi = recovery_error_estimate("phi", scalar_space, phi, GradientMeasure::Gradient, exact.m.beta);
+    const SpaceErrorField ephi =
+        recovery_error_estimate("phi", scalar_space, phi, GradientMeasure::Gradient, exact.m.beta);
     EXPECT_GT(eu.norm, 0.1) << "P" << order;
     EXPECT_LT(eu.relative(), 1e-12) << "P" << order;
     EXPECT_LT(ephi.relative(), 1e-12) << "P" << order;
@@ -94,7 +95,8 @@ TEST(RecoveryEstimate, AnEstimatorServesTheSpacesOfItsScalarStructure) {
   const auto mesh = distorted_square(4);
   const PiezoMmsExact exact;
   const FESpace vector_space(mesh, 1, 2), scalar_space(mesh, 1, 1), quadratic(mesh, 2, 1);
-  const Eigen::VectorXd phi = scalar_space.interpolate([](const double* x, double* out) { out[0] = std::sin(3 * x[0]) * x[1]; });
+  const Eigen::VectorXd phi =
+      scalar_space.interpolate([](const double* x, double* out) { out[0] = std::sin(3 * x[0]) * x[1]; });
   const SpaceErrorEstimator shared(vector_space), own(scalar_space);
   EXPECT_TRUE(shared.serves(scalar_space));
   EXPECT_FALSE(shared.serves(quadratic));
@@ -161,9 +163,10 @@ TEST_P(RecoveryEstimateOnTheManufacturedSolution, MatchesTheTrueErrorAndItsRate)
     estimate_u.push_back(estimate.field("u")->estimate);
     estimate_phi.push_back(estimate.field("phi")->estimate);
     true_u.push_back(energy_norm_difference(m.space("u"), m.values("u"), grad_u, GradientMeasure::Strain, exact.m.B));
-    true_phi.push_back(energy_norm_difference(m.space("phi"), m.values("phi"), grad_phi, GradientMeasure::Gradient, exact.m.beta));
-    std::printf("P%d n=%d: u estimate %.4e true %.4e (effectivity %.3f), phi estimate %.4e true %.4e (%.3f)\n",
-                order, n, estimate_u.back(), true_u.back(), estimate_u.back() / true_u.back(), estimate_phi.back(),
+    true_phi.push_back(
+        energy_norm_difference(m.space("phi"), m.values("phi"), grad_phi, GradientMeasure::Gradient, exact.m.beta));
+    std::printf("P%d n=%d: u estimate %.4e true %.4e (effectivity %.3f), phi estimate %.4e true %.4e (%.3f)\n", order,
+                n, estimate_u.back(), true_u.back(), estimate_u.back() / true_u.back(), estimate_phi.back(),
                 true_phi.back(), estimate_phi.back() / true_phi.back());
   }
   const size_t last = sizes.size() - 1;
@@ -188,11 +191,11 @@ INSTANTIATE_TEST_SUITE_P(Orders, RecoveryEstimateOnTheManufacturedSolution, ::te
 TEST(RecoveryEstimate, RefusesAWeightOfTheWrongSizeAndAStrainOfAScalar) {
   const auto mesh = distorted_square(2);
   const FESpace vector_space(mesh, 1, 2), scalar_space(mesh, 1, 1);
-  const Eigen::VectorXd u = Eigen::VectorXd::Zero(vector_space.num_dofs()), phi = Eigen::VectorXd::Zero(scalar_space.num_dofs());
+  const Eigen::VectorXd u = Eigen::VectorXd::Zero(vector_space.num_dofs()),
+                        phi = Eigen::VectorXd::Zero(scalar_space.num_dofs());
   const Eigen::MatrixXd I2 = Eigen::MatrixXd::Identity(2, 2), I3 = Eigen::MatrixXd::Identity(3, 3);
-  testing::expect_error_containing(
-      [&] { recovery_error_estimate("u", vector_space, u, GradientMeasure::Strain, I2); },
-      {"space error estimate of 'u': the weight is 2 x 2, the strain needs 3 x 3"});
+  testing::expect_error_containing([&] { recovery_error_estimate("u", vector_space, u, GradientMeasure::Strain, I2); },
+                                   {"space error estimate of 'u': the weight is 2 x 2, the strain needs 3 x 3"});
   testing::expect_error_containing(
       [&] { recovery_error_estimate("phi", scalar_space, phi, GradientMeasure::Strain, I3); },
       {"'phi'", "a strain needs 2 components, the field has 1"});

@@ -54,10 +54,10 @@ struct StepperRun {
   std::map<std::string, Eigen::VectorXd> values;  // at the end
   std::shared_ptr<TimeErrorEstimator> estimator;  // for its norm
   RunSummary summary;
-  int solves = 0;            // Newton solves: accepted, rejected and cut-back attempts
-  double max_u_error = 0;    // over the accepted steps: L2 error of u against the exact u, over max |g|
+  int solves = 0;          // Newton solves: accepted, rejected and cut-back attempts
+  double max_u_error = 0;  // over the accepted steps: L2 error of u against the exact u, over max |g|
   double min_dt = 1e300, max_dt = 0;
-  double min_dt_time = 0;    // where the smallest step ended
+  double min_dt_time = 0;  // where the smallest step ended
   double first_dt = 0;
 };
 
@@ -71,7 +71,8 @@ StepperRun run(const SchemeFactory& make, PiezoMmsPhysics physics, const TimePro
   testing::PiezoMmsProblem p = testing::build_piezo_mms_problem(square(4), 2, exact, physics, make(), time);
   Model& m = *p.model;
   const FESpace& space = m.space("v");
-  p.scheme->set_initial_state(m, exact.interpolate_vector(space, time.g(0)), exact.interpolate_vector(space, time.g_dot(0)));
+  p.scheme->set_initial_state(m, exact.interpolate_vector(space, time.g(0)),
+                              exact.interpolate_vector(space, time.g_dot(0)));
   StepperOptions options;
   options.end = end;
   options.step = end / steps;
@@ -166,11 +167,12 @@ TEST(AdaptiveSteps, BeatUniformStepsOnASharpTransientAtEqualCost) {
     a.tolerance = tolerance;
     const StepperRun adaptive = run(make, kQuasiStatic, step, 0.5, 20, a);
     const StepperRun uniform = run(make, kQuasiStatic, step, 0.5, adaptive.solves);
-    std::printf("%-15s tolerance %.0e: adaptive %d steps, %d solves (%d rejected), dt %.2e .. %.2e, error %.3e, "
-                "estimate %.3e | uniform %d steps: error %.3e\n",
-                label, tolerance, adaptive.summary.steps, adaptive.solves, adaptive.summary.rejections, adaptive.min_dt,
-                adaptive.max_dt, adaptive.max_u_error, adaptive.summary.time_error.max_global(), uniform.solves,
-                uniform.max_u_error);
+    std::printf(
+        "%-15s tolerance %.0e: adaptive %d steps, %d solves (%d rejected), dt %.2e .. %.2e, error %.3e, "
+        "estimate %.3e | uniform %d steps: error %.3e\n",
+        label, tolerance, adaptive.summary.steps, adaptive.solves, adaptive.summary.rejections, adaptive.min_dt,
+        adaptive.max_dt, adaptive.max_u_error, adaptive.summary.time_error.max_global(), uniform.solves,
+        uniform.max_u_error);
     EXPECT_LT(adaptive.max_u_error, uniform.max_u_error / 3) << label;
     EXPECT_LT(adaptive.summary.rejections, adaptive.summary.steps / 10) << label;
     EXPECT_LT(adaptive.min_dt, adaptive.max_dt / 50) << label << ": the steps should follow the transient";
@@ -205,9 +207,11 @@ TEST(AdaptiveSteps, BadSettingsAreRefusedNamingThem) {
     change(o);
     return testing::error_of([&] { Stepper{o}; });
   };
-  EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->tolerance = 0; }), "the tolerance must be in (0, 1), got 0");
+  EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->tolerance = 0; }),
+                  "the tolerance must be in (0, 1), got 0");
   EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->tolerance = 2; }), "got 2");
-  EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->max_growth = 3; }), "max_growth must be in (1, 2], got 3");
+  EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->max_growth = 3; }),
+                  "max_growth must be in (1, 2], got 3");
   EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->safety = 0; }), "safety must be in (0, 1], got 0");
   EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->max_cut = 1; }), "max_cut must be in (0, 1), got 1");
   EXPECT_CONTAINS(refusal([](StepperOptions& o) { o.adaptive->factorization_cost = -1; }),

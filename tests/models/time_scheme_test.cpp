@@ -26,11 +26,11 @@
 #include "assembly/error.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "assembly/norms.hpp"
-#include "models/solvers/newton.hpp"
 #include "models/piezo/initial_potential.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/scene/scene.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "models/solvers/newton.hpp"
 #include "models/stepper.hpp"
 #include "models/time_scheme.hpp"
 #include "support/piezo_mms.hpp"
@@ -103,7 +103,7 @@ SchemeRun finish(const Problem& p) {
 
 // N uniform steps to T through the Stepper.
 SchemeRun run_uniform(std::shared_ptr<const Mesh> mesh, const SchemeFactory& make, PiezoMmsPhysics physics, int steps,
-                Start start) {
+                      Start start) {
   auto p = start_problem(std::move(mesh), make, physics, start);
   StepperOptions options;
   options.end = kT;
@@ -159,12 +159,14 @@ class DynamicOrder : public ::testing::Test {
 std::shared_ptr<const Mesh> DynamicOrder::mesh_;
 
 TEST_F(DynamicOrder, BackwardEulerIsFirstOrder) {
-  const double rate = measure("backward Euler", [] { return std::make_unique<BackwardEuler>(); }, {8, 16, 32}, 1);
+  const double rate = measure(
+      "backward Euler", [] { return std::make_unique<BackwardEuler>(); }, {8, 16, 32}, 1);
   EXPECT_NEAR(rate, 1.0, 0.15);
 }
 
 TEST_F(DynamicOrder, BDF2IsSecondOrder) {
-  const double rate = measure("BDF2", [] { return std::make_unique<BDF2>(); }, {8, 16, 32}, 2);
+  const double rate = measure(
+      "BDF2", [] { return std::make_unique<BDF2>(); }, {8, 16, 32}, 2);
   EXPECT_NEAR(rate, 2.0, 0.15);
 }
 
@@ -177,8 +179,10 @@ TEST_F(DynamicOrder, CrankNicolsonIsSecondOrderWithEitherStart) {
 }
 
 TEST_F(DynamicOrder, ThetaOneIsBackwardEuler) {
-  const SchemeRun euler = run_uniform(mesh_, [] { return std::make_unique<BackwardEuler>(); }, kDynamic, 16, Start::Given);
-  const SchemeRun theta = run_uniform(mesh_, [] { return std::make_unique<ThetaScheme>(1.0); }, kDynamic, 16, Start::Given);
+  const SchemeRun euler = run_uniform(
+      mesh_, [] { return std::make_unique<BackwardEuler>(); }, kDynamic, 16, Start::Given);
+  const SchemeRun theta = run_uniform(
+      mesh_, [] { return std::make_unique<ThetaScheme>(1.0); }, kDynamic, 16, Start::Given);
   const double du = (theta.u - euler.u).lpNorm<Eigen::Infinity>(), dv = (theta.v - euler.v).lpNorm<Eigen::Infinity>();
   const double dphi = (theta.phi - euler.phi).lpNorm<Eigen::Infinity>();
   std::printf("theta = 1 vs backward Euler, 16 steps: max |du| %.1e, |dv| %.1e, |dphi| %.1e\n", du, dv, dphi);
@@ -217,7 +221,8 @@ TEST(QuasiStaticOrder, BDF2AndCrankNicolsonAreSecondOrderWithoutInertia) {
       {"quasi-static backward Euler", [] { return std::make_unique<BackwardEuler>(); }, Start::Given, 1},
       {"quasi-static BDF2", [] { return std::make_unique<BDF2>(); }, Start::Given, 2},
       {"quasi-static Crank-Nicolson (BE start)", [] { return std::make_unique<ThetaScheme>(0.5); }, Start::Given, 2},
-      {"quasi-static Crank-Nicolson (given v0)", [] { return std::make_unique<ThetaScheme>(0.5); }, Start::Consistent, 2},
+      {"quasi-static Crank-Nicolson (given v0)", [] { return std::make_unique<ThetaScheme>(0.5); }, Start::Consistent,
+       2},
   };
   for (const Case& c : cases) {
     std::vector<Eigen::VectorXd> u;
@@ -234,7 +239,8 @@ TEST(VariableStep, BDF2StaysSecondOrderWhenTheStepAlternates) {
   const std::vector<int> steps = {16, 32, 64, 128};
   std::vector<Eigen::VectorXd> u;
   for (int n : steps) {
-    auto p = start_problem(mesh, [] { return std::make_unique<BDF2>(); }, kDynamic, Start::Given);
+    auto p = start_problem(
+        mesh, [] { return std::make_unique<BDF2>(); }, kDynamic, Start::Given);
     Model& m = *p->s.model;
     auto& scheme = dynamic_cast<BDF2&>(*p->s.scheme);
     NewtonSolver newton = small_system_newton();
@@ -418,10 +424,11 @@ TEST(SchemeByName, FactoryRecipeAndSceneChooseTheScheme) {
     return kinds;
   };
   const FieldKind U = FieldKind::Unknown, D = FieldKind::Data, A = FieldKind::Affine;
-  EXPECT_EQ(fields_of("bdf2"), (std::map<std::string, FieldKind>{{"v", U}, {"u", A}, {"u_prev", D}, {"u_prev2", D},
-                                                                  {"a", A}, {"v_prev", D}, {"v_prev2", D}}));
-  EXPECT_EQ(fields_of("theta"), (std::map<std::string, FieldKind>{{"v", U}, {"u", A}, {"u_prev", D}, {"v_prev", D},
-                                                                   {"a", A}, {"a_prev", D}}));
+  EXPECT_EQ(fields_of("bdf2"),
+            (std::map<std::string, FieldKind>{
+                {"v", U}, {"u", A}, {"u_prev", D}, {"u_prev2", D}, {"a", A}, {"v_prev", D}, {"v_prev2", D}}));
+  EXPECT_EQ(fields_of("theta"), (std::map<std::string, FieldKind>{
+                                    {"v", U}, {"u", A}, {"u_prev", D}, {"v_prev", D}, {"a", A}, {"a_prev", D}}));
 
   // Scenes: time.scheme and time.theta, validated with their paths.
   const std::string scene = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
@@ -433,8 +440,9 @@ TEST(SchemeByName, FactoryRecipeAndSceneChooseTheScheme) {
   auto problem = [&](const std::vector<std::string>& overrides) {
     return testing::error_of([&] { load_scene_file(scene, overrides); });
   };
-  EXPECT_NE(problem({"time.scheme=leapfrog"}).find("'time.scheme': unknown time scheme 'leapfrog' (known: "
-                                                  "backward_euler, bdf2, theta)"),
+  EXPECT_NE(problem({"time.scheme=leapfrog"})
+                .find("'time.scheme': unknown time scheme 'leapfrog' (known: "
+                      "backward_euler, bdf2, theta)"),
             std::string::npos)
       << problem({"time.scheme=leapfrog"});
   EXPECT_NE(problem({"time.scheme=bdf2", "time.theta=0.5"}).find("time.theta"), std::string::npos);

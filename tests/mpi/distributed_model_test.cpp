@@ -20,8 +20,7 @@ namespace {
 
 // Fails at the points left of x = 0.5: in the cells of one process of two.
 struct FailsOnTheLeft {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     if (in.x[0] < 0.5) fail("the kernel met x = ", in.x[0]);
     for (int c = 0; c < in.dim; ++c) out.f0[0][c] = in.value[0][c];
   }
@@ -29,19 +28,21 @@ struct FailsOnTheLeft {
 
 template <class Kernel>
 std::shared_ptr<Brick> brick_of(const std::string& region, Integration integration, Kernel kernel) {
-  return std::make_shared<WeakFormBrick<Kernel>>(
-      WeakForm{.name = region + " term", .fields = {{"u", integration == Integration::Cells}}, .tests = {"u"},
-               .couplings = {{"u", "u"}}, .region = region, .integration = integration},
-      kernel);
+  return std::make_shared<WeakFormBrick<Kernel>>(WeakForm{.name = region + " term",
+                                                          .fields = {{"u", integration == Integration::Cells}},
+                                                          .tests = {"u"},
+                                                          .couplings = {{"u", "u"}},
+                                                          .region = region,
+                                                          .integration = integration},
+                                                 kernel);
 }
 
 TEST(DistributedModel, RunsOnTwoProcesses) { ASSERT_EQ(processes::count(), 2) << "start it with mpirun -np 2"; }
 
 TEST(DistributedModel, ResidualsAreTheWholeModelsAndJacobianSharesSumToTheWhole) {
   for (const Shape shape : {Shape::Triangle, Shape::Tetrahedron}) {
-    auto mesh = std::make_shared<const Mesh>(shape == Shape::Triangle
-                                                 ? rectangle_mesh({0, 0}, {3, 1}, 24, 8, shape)
-                                                 : box_mesh({0, 0, 0}, {3, 1, 1}, 9, 3, 3, shape));
+    auto mesh = std::make_shared<const Mesh>(shape == Shape::Triangle ? rectangle_mesh({0, 0}, {3, 1}, 24, 8, shape)
+                                                                      : box_mesh({0, 0, 0}, {3, 1, 1}, 9, 3, 3, shape));
     auto space = std::make_shared<const FESpace>(mesh, 1, mesh->dim());
     Model model(mesh);
     model.add_unknown("u", space);

@@ -82,7 +82,8 @@ std::string field_of_column(const std::string& column) {
   if (column == "E_balance") return "";
   if (column.rfind("E_", 0) == 0 || column.rfind("W_", 0) == 0) return "energy books";
   if (column.rfind("phi", 0) == 0) return "phi";
-  if ((column[0] == 'u' || column[0] == 'v') && column.size() >= 2 && std::string("xyz").find(column[1]) != std::string::npos)
+  if ((column[0] == 'u' || column[0] == 'v') && column.size() >= 2 &&
+      std::string("xyz").find(column[1]) != std::string::npos)
     return std::string(1, column[0]);
   return "column " + column;
 }
@@ -131,7 +132,8 @@ void compare_pieces(const std::string& whole, const fs::path& pvtu, Spreads& spr
   using Key = std::array<double, 3>;
   const auto points = pc::testing::find_array(whole, "Points", "Points").doubles();
   std::map<Key, int> point_of;
-  for (size_t p = 0; 3 * p < points.size(); ++p) point_of[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = int(p);
+  for (size_t p = 0; 3 * p < points.size(); ++p)
+    point_of[{points[3 * p], points[3 * p + 1], points[3 * p + 2]}] = int(p);
   // A cell by its sorted points.
   const auto cells_of = [](const std::vector<std::int64_t>& connectivity, const std::vector<std::int64_t>& ends,
                            auto&& global) {
@@ -155,7 +157,8 @@ void compare_pieces(const std::string& whole, const fs::path& pvtu, Spreads& spr
   const std::string parallel = read_text(pvtu);
   std::map<std::string, std::vector<double>> gathered;  // "PointData/u" -> values in whole's order
   std::vector<char> point_seen(points.size() / 3, 0), cell_seen(cell_of.size(), 0);
-  for (size_t at = parallel.find("<Piece Source=\""); at != std::string::npos; at = parallel.find("<Piece Source=\"", at + 1)) {
+  for (size_t at = parallel.find("<Piece Source=\""); at != std::string::npos;
+       at = parallel.find("<Piece Source=\"", at + 1)) {
     const size_t begin = at + 15, end = parallel.find('"', begin);
     const std::string piece = read_text(pvtu.parent_path() / parallel.substr(begin, end - begin));
     const auto piece_points = pc::testing::find_array(piece, "Points", "Points").doubles();
@@ -166,9 +169,9 @@ void compare_pieces(const std::string& whole, const fs::path& pvtu, Spreads& spr
       global[p] = found->second;
       point_seen[size_t(found->second)] = 1;
     }
-    const auto cells = cells_of(pc::testing::find_array(piece, "Cells", "connectivity").int64s(),
-                                pc::testing::find_array(piece, "Cells", "offsets").int64s(),
-                                [&](int p) { return global[size_t(p)]; });
+    const auto cells =
+        cells_of(pc::testing::find_array(piece, "Cells", "connectivity").int64s(),
+                 pc::testing::find_array(piece, "Cells", "offsets").int64s(), [&](int p) { return global[size_t(p)]; });
     std::vector<int> cell_index;
     for (const auto& nodes : cells) {
       const auto found = cell_of.find(nodes);
@@ -187,7 +190,8 @@ void compare_pieces(const std::string& whole, const fs::path& pvtu, Spreads& spr
         const std::vector<int>& to = on_points ? global : cell_index;
         for (size_t i = 0; i < to.size(); ++i)
           for (int k = 0; k < array.components; ++k)
-            out[size_t(to[i]) * size_t(array.components) + size_t(k)] = values[i * size_t(array.components) + size_t(k)];
+            out[size_t(to[i]) * size_t(array.components) + size_t(k)] =
+                values[i * size_t(array.components) + size_t(k)];
       }
   }
   EXPECT_EQ(std::count(point_seen.begin(), point_seen.end(), 0), 0) << pvtu << ": points no piece holds";
@@ -236,8 +240,7 @@ Spreads compare_runs(const fs::path& a, const fs::path& b) {
       const std::string text = number(s, key);
       return text == "missing" ? -1.0 : std::stod(text.substr(key.size() + 4));
     };
-    EXPECT_LE(std::abs(count(sa, "newton_iterations_total") - count(sb, "newton_iterations_total")),
-              count(sb, "steps"))
+    EXPECT_LE(std::abs(count(sa, "newton_iterations_total") - count(sb, "newton_iterations_total")), count(sb, "steps"))
         << part;
   }
   return spreads;
@@ -339,7 +342,8 @@ TEST_F(DistributedRuns, AStoppedRunResumesToTheResultsOfAnUninterruptedOne) {
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status)) << "mpirun did not exit after SIGTERM";
-  ASSERT_EQ(WEXITSTATUS(status), 1) << "the run was not stopped (it ended first?): " << read_text(directory_ / "stopped.txt");
+  ASSERT_EQ(WEXITSTATUS(status), 1) << "the run was not stopped (it ended first?): "
+                                    << read_text(directory_ / "stopped.txt");
   EXPECT_NE(read_text(directory_ / "stopped.txt").find("interrupted by SIGTERM"), std::string::npos);
   EXPECT_TRUE(fs::exists(stopped / "insulated" / "checkpoint.bin"));
   const std::string rows = read_text(history);
@@ -349,7 +353,8 @@ TEST_F(DistributedRuns, AStoppedRunResumesToTheResultsOfAnUninterruptedOne) {
   const Outcome resumed = run(2, scene + stopped.string() + " --resume");
   ASSERT_EQ(resumed.status, 0) << resumed.log;
   for (const auto& [field, s] : compare_runs(whole, stopped))
-    EXPECT_LE(s.difference, relative_tolerance(field) * s.size) << field << ": differs by " << s.difference << ", size " << s.size;
+    EXPECT_LE(s.difference, relative_tolerance(field) * s.size)
+        << field << ": differs by " << s.difference << ", size " << s.size;
   const std::string manifest = read_text(stopped / "manifest.json");
   EXPECT_NE(manifest.find("\"resumes\": 1"), std::string::npos) << manifest;
   EXPECT_NE(manifest.find("\"state\": \"completed\""), std::string::npos) << manifest;

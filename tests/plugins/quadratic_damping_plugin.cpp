@@ -18,10 +18,7 @@ struct QuadraticDamping {
     return std::array{pc::law_parameter("c_nu", &QuadraticDamping::c_nu, "Pa s^2/m^2", "quadratic damping coefficient",
                                         pc::Range::at_least(0), pc::Required::yes)};
   }
-  template <class S>
-  S operator()(const S& r) const {
-    return r < 0.0 ? S(0.0) : c_nu * r * r;
-  }
+  template <class S> S operator()(const S& r) const { return r < 0.0 ? S(0.0) : c_nu * r * r; }
 };
 
 }  // namespace

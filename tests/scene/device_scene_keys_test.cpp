@@ -33,7 +33,8 @@ Scene coarse(std::vector<std::string> overrides) {
 }
 
 TEST(DeviceSceneKeys, ElectrodesAndFoundationVelocityAreRead) {
-  const Scene scene = coarse({kSineElectrode, R"(contact.foundation_velocity=[0.25, {"type": "ramp", "value": -1e-3, "duration": 0.1}])"});
+  const Scene scene = coarse(
+      {kSineElectrode, R"(contact.foundation_velocity=[0.25, {"type": "ramp", "value": -1e-3, "duration": 0.1}])"});
   ASSERT_EQ(scene.spec.electrodes.size(), 1u);
   EXPECT_EQ(scene.spec.electrodes[0].region, "right");
   EXPECT_NEAR(scene.spec.electrodes[0].voltage.value(1.0 / 200), 10, 1e-12);
@@ -43,23 +44,34 @@ TEST(DeviceSceneKeys, ElectrodesAndFoundationVelocityAreRead) {
 }
 
 TEST(DeviceSceneKeys, BadElectrodesAreRefusedNamingThePath) {
-  expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": {"type": "square"}}])"}); },
-                          {"'electrodes[0].voltage.type' must be constant, ramp, sine or table, got 'square'"});
   expect_error_containing(
-      [] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": {"type": "sine", "amplitude": 1, "frequency": 0}}])"}); },
+      [] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": {"type": "square"}}])"}); },
+      {"'electrodes[0].voltage.type' must be constant, ramp, sine or table, got 'square'"});
+  expect_error_containing(
+      [] {
+        coarse(
+            {R"(electrodes=[{"name": "a", "region": "right", "voltage": {"type": "sine", "amplitude": 1, "frequency": 0}}])"});
+      },
       {"'electrodes[0].voltage.frequency' must be > 0, got 0"});
   expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "nowhere", "voltage": 1}])"}); },
                           {"electrodes[0].region", "nowhere"});
   expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "top", "voltage": 1}])"}); },
                           {"'electrodes[0].region': 'top' is grounded"});
   expect_error_containing(
-      [] { coarse({R"(electrodes=[{"name": "a", "region": "left", "voltage": 1}, {"name": "a", "region": "right", "voltage": 2}])"}); },
+      [] {
+        coarse(
+            {R"(electrodes=[{"name": "a", "region": "left", "voltage": 1}, {"name": "a", "region": "right", "voltage": 2}])"});
+      },
       {"'electrodes[1].name': electrode 'a' is named twice"});
   expect_error_containing(
-      [] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": {"type": "table", "points": [[0, 1], [0, 2]]}}])"}); },
+      [] {
+        coarse(
+            {R"(electrodes=[{"name": "a", "region": "right", "voltage": {"type": "table", "points": [[0, 1], [0, 2]]}}])"});
+      },
       {"'electrodes[0].voltage'", "table times must increase"});
-  expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": 1, "volts": 2}])"}); },
-                          {"electrodes[0]", "volts"});
+  expect_error_containing(
+      [] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": 1, "volts": 2}])"}); },
+      {"electrodes[0]", "volts"});
 }
 
 TEST(DeviceSceneKeys, FloatingElectrodesAreReadAndAVoltageOrAChargeInTheWrongPlaceRefused) {
@@ -72,8 +84,9 @@ TEST(DeviceSceneKeys, FloatingElectrodesAreReadAndAVoltageOrAChargeInTheWrongPla
   expect_error_containing(
       [] { coarse({R"(electrodes=[{"name": "a", "region": "right", "floating": true, "voltage": 1}])"}); },
       {"'electrodes[0]'", "floating electrode's voltage is computed"});
-  expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": 1, "charge": 1}])"}); },
-                          {"'electrodes[0]'", "'charge' is for a floating one"});
+  expect_error_containing(
+      [] { coarse({R"(electrodes=[{"name": "a", "region": "right", "voltage": 1, "charge": 1}])"}); },
+      {"'electrodes[0]'", "'charge' is for a floating one"});
   expect_error_containing([] { coarse({R"(electrodes=[{"name": "a", "region": "right", "floating": 1}])"}); },
                           {"electrodes[0].floating"});
 }
@@ -132,7 +145,8 @@ TEST_F(DeviceSceneRun, HistoryHoldsEachElectrodesVoltageChargeAndCurrentAcrossAR
 // is refused naming both.
 TEST_F(DeviceSceneRun, FloatingElectrodeReportsItsComputedVoltageAndGivenCharge) {
   // On the contact face: it shares no dof with the grounded top (left and right would, at the corners).
-  const Scene scene = coarse({R"(electrodes=[{"name": "sense", "region": "bottom", "floating": true, "charge": {"type": "ramp", "value": 1e-9, "duration": 0.1}}])"});
+  const Scene scene = coarse(
+      {R"(electrodes=[{"name": "sense", "region": "bottom", "floating": true, "charge": {"type": "ramp", "value": 1e-9, "duration": 0.1}}])"});
   ASSERT_TRUE(run_foundation(scene, find_foundation(scene, "insulated"), directory_.string(), false).completed);
   const testing::Table history = testing::read_csv(directory_ / "history.csv");
   const int v = history.column("V_sense"), q = history.column("Q_sense"), balance = history.column("E_balance");

@@ -125,8 +125,7 @@ TEST(Json, MissingKeysAndIndicesNameThePath) {
   const Json root = scene();
   EXPECT_EQ(error_of([&] { root["contact"]["c_nuu"]; }), "scene: missing key 'contact.c_nuu'");
   EXPECT_EQ(error_of([&] { root["loads"]; }), "scene: missing key 'loads'");
-  EXPECT_EQ(error_of([&] { root["time"]["u0"][2]; }),
-            "scene: 'time.u0[2]' is out of range: 'time.u0' has 2 entries");
+  EXPECT_EQ(error_of([&] { root["time"]["u0"][2]; }), "scene: 'time.u0[2]' is out of range: 'time.u0' has 2 entries");
 }
 
 TEST(Json, IntegersMustBeIntegralAndInRange) {
@@ -165,8 +164,7 @@ TEST(Json, MatrixErrorsNameTheRow) {
             "scene: 'm.empty_row' must be a matrix, got an empty row 0");
   EXPECT_EQ(error_of([&] { scene()["material"]["piezo_E"].as_matrix(3, 3); }),
             "scene: 'material.piezo_E' must be a 3x3 matrix, got 2x3");
-  EXPECT_EQ(error_of([&] { scene()["geometry"]["x"].as_vector(3); }),
-            "scene: 'geometry.x' must have 3 entries, got 2");
+  EXPECT_EQ(error_of([&] { scene()["geometry"]["x"].as_vector(3); }), "scene: 'geometry.x' must have 3 entries, got 2");
 }
 
 TEST(Json, HasNoNanOrInfinity) {
@@ -239,11 +237,13 @@ TEST(Json, IsStrict) {
             "expected end of input");
   for (const char* bad : {"+1", ".5", "1.", "1.e3", "1e", "1e+", "-", "0x10", "1_000"})
     EXPECT_THAT(parse_error(bad), HasSubstr("in.json:1:")) << bad;
-  EXPECT_EQ(parse_error("\"a\tb\""), "in.json:1:3: syntax error while parsing value - invalid string: control "
-                                     "character U+0009 (HT) must be escaped to \\u0009 or \\t; "
-                                     "last read: '\"a<U+0009>'");
-  EXPECT_EQ(parse_error("\"\\x\""), "in.json:1:3: syntax error while parsing value - invalid string: forbidden "
-                                    "character after backslash; last read: '\"\\x'");
+  EXPECT_EQ(parse_error("\"a\tb\""),
+            "in.json:1:3: syntax error while parsing value - invalid string: control "
+            "character U+0009 (HT) must be escaped to \\u0009 or \\t; "
+            "last read: '\"a<U+0009>'");
+  EXPECT_EQ(parse_error("\"\\x\""),
+            "in.json:1:3: syntax error while parsing value - invalid string: forbidden "
+            "character after backslash; last read: '\"\\x'");
   const std::string bad_utf8 = "syntax error while parsing value - invalid string: ill-formed UTF-8 byte; last read: ";
   EXPECT_EQ(parse_error("\"\xC3\""), "in.json:1:3: " + bad_utf8 + "'\"\xC3\"'");
   EXPECT_EQ(parse_error("\"\xC0\xAF\""), "in.json:1:2: " + bad_utf8 + "'\"\xC0'");          // overlong '/'
@@ -256,7 +256,7 @@ TEST(Json, IsStrict) {
   // What RFC 8259 does allow.
   EXPECT_EQ(parse_json(" \t\r\n[ -0.5e+2 , 0E-1 , 1E2 ]\n", "s").as_vector(), (std::vector<double>{-50, 0, 100}));
   EXPECT_EQ(parse_json("\xEF\xBB\xBF{}", "s").size(), 0u);  // a byte order mark may be ignored
-  EXPECT_EQ(parse_json("\"x\"", "s").as_string(), "x");      // any value may be the root
+  EXPECT_EQ(parse_json("\"x\"", "s").as_string(), "x");     // any value may be the root
 }
 
 TEST(Json, DecodesEscapes) {
@@ -269,16 +269,17 @@ TEST(Json, DecodesEscapes) {
   const std::string unpaired_high = bad_string + "surrogate U+D800..U+DBFF must be followed by U+DC00..U+DFFF";
   EXPECT_EQ(parse_error(R"("\ud83d")"), "in.json:1:8: " + unpaired_high + "; last read: '\"\\ud83d\"'");
   EXPECT_EQ(parse_error(R"("\ud83d\u0041")"), "in.json:1:13: " + unpaired_high + "; last read: '\"\\ud83d\\u0041'");
-  EXPECT_EQ(parse_error(R"("\ude00")"),
-            "in.json:1:7: " + bad_string +
-                "surrogate U+DC00..U+DFFF must follow U+D800..U+DBFF; last read: '\"\\ude00'");
+  EXPECT_EQ(
+      parse_error(R"("\ude00")"),
+      "in.json:1:7: " + bad_string + "surrogate U+DC00..U+DFFF must follow U+D800..U+DBFF; last read: '\"\\ude00'");
   EXPECT_EQ(parse_error(R"("\u12G4")"),
             "in.json:1:6: " + bad_string + "'\\u' must be followed by 4 hex digits; last read: '\"\\u12G'");
 }
 
 TEST(Json, DumpRoundTripsDoublesExactly) {
-  const std::vector<double> values = {0.1,     1e-300, 1.7976931348623157e308, -0.0, 5e-324, 2.2250738585072014e-308,
-                                      1.0 / 3, 1e22,   -6.62281,               0.03, 9007199254740993.0};
+  const std::vector<double> values = {
+      0.1,      1e-300, 1.7976931348623157e308, -0.0, 5e-324, 2.2250738585072014e-308, 1.0 / 3, 1e22,
+      -6.62281, 0.03,   9007199254740993.0};
   const Json array = Json::array(std::vector<Json>(values.begin(), values.end()));
   const Json back = parse_json(array.dump(), "s");
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -301,23 +302,24 @@ TEST(Json, DumpRoundTripsDoublesExactly) {
 }
 
 TEST(Json, DumpLaysOutAndEscapes) {
-  const Json root = parse_json(R"({"b": [1, {"c": null}], "a": "q\"\\\n\u0001\u00e9", "e": {}, "f": [], "t": true})",
-                               "s");
+  const Json root =
+      parse_json(R"({"b": [1, {"c": null}], "a": "q\"\\\n\u0001\u00e9", "e": {}, "f": [], "t": true})", "s");
   EXPECT_EQ(root.dump(0), R"({"b":[1,{"c":null}],"a":"q\"\\\n\u0001)"
                           "\xC3\xA9"
                           R"(","e":{},"f":[],"t":true})");
-  EXPECT_EQ(root.dump(), "{\n"
-                         "  \"b\": [\n"
-                         "    1,\n"
-                         "    {\n"
-                         "      \"c\": null\n"
-                         "    }\n"
-                         "  ],\n"
-                         "  \"a\": \"q\\\"\\\\\\n\\u0001\xC3\xA9\",\n"
-                         "  \"e\": {},\n"
-                         "  \"f\": [],\n"
-                         "  \"t\": true\n"
-                         "}");
+  EXPECT_EQ(root.dump(),
+            "{\n"
+            "  \"b\": [\n"
+            "    1,\n"
+            "    {\n"
+            "      \"c\": null\n"
+            "    }\n"
+            "  ],\n"
+            "  \"a\": \"q\\\"\\\\\\n\\u0001\xC3\xA9\",\n"
+            "  \"e\": {},\n"
+            "  \"f\": [],\n"
+            "  \"t\": true\n"
+            "}");
 }
 
 TEST(Json, DumpIsStable) {
@@ -396,8 +398,9 @@ TEST(Json, SetPathErrors) {
   EXPECT_EQ(set("contact.c_nuu"),
             "scene: unknown key 'contact.c_nuu' (known: c_nu, c_tau, law_normal, law_tangential)");
   EXPECT_EQ(set("foundation.insulated.x"), "scene: unknown key 'foundation.insulated.x' (known: none)");
-  EXPECT_EQ(set("contatc.c_nu"), "scene: unknown key 'contatc' (known: contact, foundation, geometry, material, name, "
-                                 "reference_discretization, time)");
+  EXPECT_EQ(set("contatc.c_nu"),
+            "scene: unknown key 'contatc' (known: contact, foundation, geometry, material, name, "
+            "reference_discretization, time)");
   // Only the last step may be new.
   EXPECT_EQ(set("contatc.c_nu", Json::NewKeys::allow),
             "scene: unknown key 'contatc' (known: contact, foundation, geometry, material, name, "
@@ -462,9 +465,10 @@ TEST(Json, UnknownKeys) {
   EXPECT_EQ(unknown_keys(root["contact"], {"c_nu", "c_tau"}),
             (std::vector<std::string>{"contact.law_normal", "contact.law_tangential"}));
   EXPECT_NO_THROW(require_known_keys(root["time"], {"T", "u0", "v0"}));
-  EXPECT_EQ(error_of([&] { require_known_keys(root["time"], {"T"}); }),
-            "scene: unknown key 'time.u0' (known: T)");
-  EXPECT_EQ(error_of([&] { require_known_keys(root["contact"], {"c_tau", "c_nu"}); }),
+  EXPECT_EQ(error_of([&] { require_known_keys(root["time"], {"T"}); }), "scene: unknown key 'time.u0' (known: T)");
+  EXPECT_EQ(error_of([&] {
+              require_known_keys(root["contact"], {"c_tau", "c_nu"});
+            }),
             "scene: unknown keys 'contact.law_normal', 'contact.law_tangential' (known: c_nu, c_tau)");
   EXPECT_EQ(error_of([&] { unknown_keys(root["name"], {}); }),
             "scene: 'name' must be an object, got the string \"paper2d\"");

@@ -22,7 +22,8 @@ const std::string& kBox = testing::kBoxScene;
 // box3d.json on a generated mesh (its own is meshed by gmsh), with the generator's region names.
 const std::vector<std::string> kGeneratedBox = [] {
   std::vector<std::string> overrides = testing::generated_box(3, 1, 1, "hexahedron");
-  overrides.insert(overrides.end(), {"output.probes.corner=[0.03, 0.01, 0.005]", "output.probes.center=[0.015, 0.005, 0.005]"});
+  overrides.insert(overrides.end(),
+                   {"output.probes.corner=[0.03, 0.01, 0.005]", "output.probes.center=[0.015, 0.005, 0.005]"});
   return overrides;
 }();
 
@@ -37,7 +38,9 @@ void expect_close(const Eigen::MatrixXd& actual, const Eigen::MatrixXd& expected
   ASSERT_EQ(actual.rows(), expected.rows()) << what;
   ASSERT_EQ(actual.cols(), expected.cols()) << what;
   EXPECT_LE((actual - expected).cwiseAbs().maxCoeff(), relative * expected.cwiseAbs().maxCoeff())
-      << what << ":\n" << actual << "\nexpected\n" << expected;
+      << what << ":\n"
+      << actual << "\nexpected\n"
+      << expected;
 }
 
 TEST(MaterialPreset, Pzt5hPoledAlongYGivesThePaperScenesTensors) {
@@ -56,7 +59,8 @@ TEST(MaterialPreset, Pzt5hPoledAlongYGivesThePaperScenesTensors) {
 TEST(MaterialPreset, Pzt5hPoledAlongYIn3dGivesTheBoxScenesTensors) {
   const Scene explicit_scene = load_scene_file(kBox, kGeneratedBox);
   const Scene preset = load_scene_file(
-      kBox, with(kGeneratedBox, R"(material={"preset": "PZT-5H", "poling": "y", "rho": 7800, "viscosity_tau_v": 0.01})"));
+      kBox,
+      with(kGeneratedBox, R"(material={"preset": "PZT-5H", "poling": "y", "rho": 7800, "viscosity_tau_v": 0.01})"));
   const PiezoContactSpec &a = preset.spec, &b = explicit_scene.spec;
   ASSERT_EQ(a.B.rows(), 6);
   EXPECT_EQ(a.rho, b.rho);
@@ -106,8 +110,8 @@ TEST(MaterialPreset, ThePolingAxisIsRequiredKnownAndInThePlaneOfA2dModel) {
   EXPECT_EQ(problem(R"({"preset": "PZT-4", "poling": "z"})"),
             "scene 'paper2d' has 1 problem:\n  - 'material.poling' is z, but a 2D model (plane strain in x-y) is "
             "poled in its plane: x or y");
-  const std::string no_preset = problem(
-      R"({"rho": 1, "elasticity_B": [[2, 1, 0], [1, 2, 0], [0, 0, 1]], "poling": "y"})");
+  const std::string no_preset =
+      problem(R"({"rho": 1, "elasticity_B": [[2, 1, 0], [1, 2, 0], [0, 0, 1]], "poling": "y"})");
   EXPECT_NE(no_preset.find("'material.poling' goes with 'material.preset'"), std::string::npos) << no_preset;
   // 3D may be poled along z; the 3D box poled along z has c33 on zz.
   const Scene z = load_scene_file(kBox, with(kGeneratedBox, R"(material={"preset": "BaTiO3", "poling": "z"})"));

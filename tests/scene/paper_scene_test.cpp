@@ -21,7 +21,6 @@ Scene coarse(std::vector<std::string> overrides = {}) {
   return load_scene_file(kScene, overrides);
 }
 
-
 TEST(PaperScene, CoarseRunsConvergeInFewNewtonIterationsAndKeepTheBoundaryConditions) {
   const Scene scene = coarse();
   for (const std::string name : {"insulated", "conductive"}) {
@@ -71,14 +70,17 @@ TEST(PaperScene, ResultsConvergeUnderMeshAndTimeStepRefinement) {
   };
   std::vector<double> mesh_values;
   for (int n : {6, 12, 24})
-    mesh_values.push_back(corner({"mesh.nx=" + std::to_string(3 * n), "mesh.ny=" + std::to_string(n), "time.steps=10"}));
-  const double mesh_order = std::log2(std::abs(mesh_values[1] - mesh_values[0]) / std::abs(mesh_values[2] - mesh_values[1]));
+    mesh_values.push_back(
+        corner({"mesh.nx=" + std::to_string(3 * n), "mesh.ny=" + std::to_string(n), "time.steps=10"}));
+  const double mesh_order =
+      std::log2(std::abs(mesh_values[1] - mesh_values[0]) / std::abs(mesh_values[2] - mesh_values[1]));
   std::printf("u_x at the corner, meshes 18x6, 36x12, 72x24: %.6e %.6e %.6e, observed order %.2f\n", mesh_values[0],
               mesh_values[1], mesh_values[2], mesh_order);
   EXPECT_GT(mesh_order, 0.8);
 
   std::vector<double> time_values;
-  for (int steps : {10, 20, 40}) time_values.push_back(corner({"mesh.nx=15", "mesh.ny=5", "time.steps=" + std::to_string(steps)}));
+  for (int steps : {10, 20, 40})
+    time_values.push_back(corner({"mesh.nx=15", "mesh.ny=5", "time.steps=" + std::to_string(steps)}));
   // The creep time A/B = 0.01 s is resolved by 10 steps over T = 0.2 s and the load grows linearly, so
   // backward Euler is already close to converged: the changes must shrink and stay tiny.
   const double change_coarse = std::abs(time_values[1] - time_values[0]);

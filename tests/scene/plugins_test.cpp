@@ -7,11 +7,11 @@
 #include <fstream>
 #include <string>
 
+#include "assembly/version.hpp"
 #include "bricks/law_registry.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_runner.hpp"
-#include "assembly/version.hpp"
 #include "support/test_helpers.hpp"
 
 namespace pc {
@@ -46,11 +46,14 @@ TEST(Plugins, ALawOfAPluginIsNamedCheckedListedAndRunLikeABuiltInOne) {
   EXPECT_CONTAINS(catalog_describe(registry_catalog(), "quadratic_damped"), "contact.c_nu [Pa s^2/m^2] required, >= 0");
 
   // Its parameters are checked like a built-in law's: range, keys it does not read.
-  EXPECT_CONTAINS(error_of([&] { scene_with_plugins("[\"" + path + "\"]", {"contact.law_normal=quadratic_damped",
-                                                                          "contact.c_nu=-1"}); }),
-                  "'contact.c_nu': c_nu = -1 must be finite and >= 0");
-  EXPECT_CONTAINS(error_of([&] { scene_with_plugins("[\"" + path + "\"]", {"contact.law_normal=quadratic_damped",
-                                                                          "contact.m=2"}); }),
+  EXPECT_CONTAINS(
+      error_of([&] {
+        scene_with_plugins("[\"" + path + "\"]", {"contact.law_normal=quadratic_damped", "contact.c_nu=-1"});
+      }),
+      "'contact.c_nu': c_nu = -1 must be finite and >= 0");
+  EXPECT_CONTAINS(error_of([&] {
+                    scene_with_plugins("[\"" + path + "\"]", {"contact.law_normal=quadratic_damped", "contact.m=2"});
+                  }),
                   "'contact.m' is read by law_normal normal_compliance, law_normal power_damped, not by the chosen "
                   "law_normal 'quadratic_damped'");
 
@@ -68,8 +71,10 @@ TEST(Plugins, ALawOfAPluginIsNamedCheckedListedAndRunLikeABuiltInOne) {
   for (const auto& b : built.model->bricks()) found = found || b->name() == "boundary dashpot (c_plugin) on right";
   EXPECT_TRUE(found);
   EXPECT_EQ(built.model->scalar("c_plugin"), 1e3);
-  EXPECT_CONTAINS(error_of([&] { scene_with_plugins("[\"" + path + "\"]",
-                                                    {"bricks=[{\"type\": \"plugin_dashpot\", \"region\": \"right\"}]"}); }),
+  EXPECT_CONTAINS(error_of([&] {
+                    scene_with_plugins("[\"" + path + "\"]",
+                                       {"bricks=[{\"type\": \"plugin_dashpot\", \"region\": \"right\"}]"});
+                  }),
                   "'bricks[0].c_plugin' is required by brick type 'plugin_dashpot'");
 
   // Loading the same file again (another scene naming it) is a no-op.

@@ -42,14 +42,14 @@ TEST(Registry, DocsTablesAreTheRegistriesOwn) {
 
 TEST(Registry, EveryNameAScenesGivesIsRegistered) {
   const std::string list = catalog_list(registry_catalog());
-  for (const char* line : {"piezoelectric materials (material.preset): BaTiO3 PZT-4 PZT-5A PZT-5H",
-                           "normal laws (contact.law_normal): linear_damped normal_compliance power_damped",
-                           "friction laws (contact.law_tangential): coulomb coulomb_exact none tresca viscous",
-                           "foundation laws (foundation.<name>.type): conductive insulated pressure_activated",
-                           "bricks (bricks[].type): boundary_dashpot",
-                           "time schemes (time.scheme): backward_euler bdf2 theta",
-                           "linear solvers (solver.linear): cholmod eigen-lu mumps umfpack",
-                           "condensations (solver.condensation): auto columns krylov schur"})
+  for (const char* line :
+       {"piezoelectric materials (material.preset): BaTiO3 PZT-4 PZT-5A PZT-5H",
+        "normal laws (contact.law_normal): linear_damped normal_compliance power_damped",
+        "friction laws (contact.law_tangential): coulomb coulomb_exact none tresca viscous",
+        "foundation laws (foundation.<name>.type): conductive insulated pressure_activated",
+        "bricks (bricks[].type): boundary_dashpot", "time schemes (time.scheme): backward_euler bdf2 theta",
+        "linear solvers (solver.linear): cholmod eigen-lu mumps umfpack",
+        "condensations (solver.condensation): auto columns krylov schur"})
     EXPECT_CONTAINS(list, line);
   const std::string theta = catalog_describe(registry_catalog(), "theta");
   EXPECT_CONTAINS(theta, "time.scheme = \"theta\" (time scheme)");
@@ -64,17 +64,21 @@ TEST(Registry, CheckRefusesWhatRunWouldRefuseWithTheKeyAndTheValue) {
       {{"contact.law_normal=linaer_damped"},
        "'contact.law_normal': unknown normal law 'linaer_damped' (known: linear_damped, normal_compliance, "
        "power_damped)"},
-      {{"contact.law_tangential=banana"}, "unknown friction law 'banana' (known: coulomb, coulomb_exact, none, tresca, viscous)"},
+      {{"contact.law_tangential=banana"},
+       "unknown friction law 'banana' (known: coulomb, coulomb_exact, none, tresca, viscous)"},
       {{"foundation.conductive.type=superconductive"}, "unknown foundation law 'superconductive'"},
-      {{"solver.condensation=diagonal"}, "'solver.condensation': unknown condensation 'diagonal' (known: auto, columns, krylov, schur)"},
+      {{"solver.condensation=diagonal"},
+       "'solver.condensation': unknown condensation 'diagonal' (known: auto, columns, krylov, schur)"},
       {{"solver.linear=superlu"}, "'solver.linear': unknown linear solver 'superlu'"},
       {{"contact.c_nu=-1"}, "'contact.c_nu': c_nu = -1 must be finite and >= 0"},
       {{"foundation.conductive.k_e=-2"}, "'foundation.conductive.k_e': k_e = -2 must be finite and >= 0"},
       {{"contact.law_tangential=coulomb", "contact.mu=0.3"},
        "'contact.c_tau' is read by law_tangential viscous, not by the chosen law_normal 'linear_damped' and "
        "law_tangential 'coulomb'"},
-      {{"contact.mu=0.3"}, "'contact.mu' is read by law_tangential coulomb, law_tangential coulomb_exact, not by the chosen"},
-      {{"foundation.conductive.p_ref=1e3"}, "'foundation.conductive.p_ref' is read by foundation type pressure_activated"},
+      {{"contact.mu=0.3"},
+       "'contact.mu' is read by law_tangential coulomb, law_tangential coulomb_exact, not by the chosen"},
+      {{"foundation.conductive.p_ref=1e3"},
+       "'foundation.conductive.p_ref' is read by foundation type pressure_activated"},
       {{"contact.typo=1"}, "unknown key 'contact.typo'"},
       {{"foundation.conductive.type=pressure_activated"},
        "'foundation.conductive.p_ref' is required by foundation type 'pressure_activated'"},

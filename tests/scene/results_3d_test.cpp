@@ -36,8 +36,8 @@ const std::string& kBox = testing::kBoxScene;
 // points are the mesh's nodes.
 const std::vector<std::string> kCoarseBox = [] {
   std::vector<std::string> overrides = testing::generated_box(6, 2, 2, "tetrahedron");
-  overrides.insert(overrides.end(), {R"(output.grid={"x": [0, 0.03, 7], "y": [0, 0.01, 3], "z": [0, 0.01, 3]})",
-                                     "time.steps=4"});
+  overrides.insert(overrides.end(),
+                   {R"(output.grid={"x": [0, 0.03, 7], "y": [0, 0.01, 3], "z": [0, 0.01, 3]})", "time.steps=4"});
   return overrides;
 }();
 
@@ -116,7 +116,7 @@ TEST_F(Results3D, GridSamplesTheVolumeWithZAndNodalValues) {
   std::set<double> zs;
   for (const auto& row : grid.rows) zs.insert(row[2]);
   EXPECT_EQ(zs, (std::set<double>{0.0, 0.005, 0.01}));  // the z range given, both ends included
-  EXPECT_EQ(grid.rows.front()[2], 0.0);                   // x fastest, z slowest
+  EXPECT_EQ(grid.rows.front()[2], 0.0);                 // x fastest, z slowest
   EXPECT_EQ(grid.rows.back()[2], 0.01);
   EXPECT_EQ(grid.rows[1][0], 0.005);
   // Every grid point is a mesh node: u, v and phi there are the nodal values, to the round-off of locating
@@ -142,11 +142,12 @@ TEST_F(Results3D, GridSamplesTheVolumeWithZAndNodalValues) {
 TEST_F(Results3D, HistoryHasUzAtTheCorner) {
   run(kBox, kCoarseBox, "conductive");
   const Table history = read_csv(directory_ / "history.csv");
-  EXPECT_EQ(history.columns, (std::vector<std::string>{"t", "uy_corner", "uz_corner", "phi_center", "newton_iterations",
-                                                       "dt", "err_time_step", "err_time_u", "err_time_v", "err_time_phi", "contact_fx",
-                                                       "contact_fy", "contact_fz", "contact_power", "E_kinetic",
-                                                       "E_elastic", "E_electric", "W_numerical", "W_viscous", "W_contact",
-                                                       "W_coupling", "W_other", "W_external", "W_boundary", "E_balance"}));
+  EXPECT_EQ(history.columns, (std::vector<std::string>{
+                                 "t",          "uy_corner",     "uz_corner",   "phi_center",    "newton_iterations",
+                                 "dt",         "err_time_step", "err_time_u",  "err_time_v",    "err_time_phi",
+                                 "contact_fx", "contact_fy",    "contact_fz",  "contact_power", "E_kinetic",
+                                 "E_elastic",  "E_electric",    "W_numerical", "W_viscous",     "W_contact",
+                                 "W_coupling", "W_other",       "W_external",  "W_boundary",    "E_balance"}));
   ASSERT_EQ(history.rows.size(), size_t(4));  // one row per step
   EXPECT_EQ(history.rows.back()[2], summary_.at("uz_corner").as_number());
   EXPECT_EQ(history.rows.back()[1], summary_.at("uy_corner").as_number());
@@ -195,11 +196,11 @@ TEST_F(Results3D, A2DRunKeepsItsColumnsAndKeysAndDescribesItsMesh) {
   EXPECT_EQ(read_csv(directory_ / "grid.csv").columns,
             (std::vector<std::string>{"x", "y", "ux", "uy", "vx", "vy", "phi"}));
   EXPECT_EQ(read_csv(directory_ / "history.csv").columns,
-            (std::vector<std::string>{"t", "uy_corner", "phi_center", "newton_iterations", "dt", "err_time_step",
-                                      "err_time_u", "err_time_v", "err_time_phi", "contact_fx", "contact_fy",
-                                      "contact_power", "E_kinetic", "E_elastic", "E_electric", "W_numerical",
-                                      "W_viscous", "W_contact", "W_coupling", "W_other", "W_external", "W_boundary",
-                                      "E_balance"}));
+            (std::vector<std::string>{
+                "t",          "uy_corner",  "phi_center",   "newton_iterations", "dt",         "err_time_step",
+                "err_time_u", "err_time_v", "err_time_phi", "contact_fx",        "contact_fy", "contact_power",
+                "E_kinetic",  "E_elastic",  "E_electric",   "W_numerical",       "W_viscous",  "W_contact",
+                "W_coupling", "W_other",    "W_external",   "W_boundary",        "E_balance"}));
   EXPECT_EQ(summary_.at("nx").as_int(), 6);
   EXPECT_EQ(summary_.at("ny").as_int(), 2);
   for (const char* key : {"nz", "max_abs_uz", "uz_corner"}) EXPECT_FALSE(summary_.contains(key)) << key;

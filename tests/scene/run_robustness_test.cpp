@@ -49,8 +49,8 @@ class RunRobustness : public testing::TemporaryDirectoryTest {
  protected:
   Outcome run(const std::string& arguments) {
     const auto out = directory_ / "stdout.txt", err = directory_ / "stderr.txt";
-    const std::string command = std::string(PIEZOCONTACT_RUNNER) + " " + arguments + " >" + quoted(out.string()) +
-                                " 2>" + quoted(err.string());
+    const std::string command =
+        std::string(PIEZOCONTACT_RUNNER) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
     const int raw = std::system(command.c_str());
     Outcome o;
     o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -63,8 +63,9 @@ class RunRobustness : public testing::TemporaryDirectoryTest {
   // output into `out` and its stdout and stderr into `log`; `extra` are more runner arguments.
   pid_t start_long_run(const std::filesystem::path& out, const std::filesystem::path& log,
                        const std::vector<std::string>& extra) {
-    std::vector<std::string> args = {PIEZOCONTACT_RUNNER, "run", kScene, "--set", "time.steps=100000",
-                                     "--set", "time.max_wall_seconds=60", "--out", out.string()};
+    std::vector<std::string> args = {
+        PIEZOCONTACT_RUNNER,        "run",   kScene,      "--set", "time.steps=100000", "--set",
+        "time.max_wall_seconds=60", "--out", out.string()};
     args.insert(args.end(), extra.begin(), extra.end());
     const pid_t pid = fork();
     if (pid == 0) {
@@ -114,8 +115,8 @@ TEST_F(RunRobustness, AnOverflowingMaterialStopsTheRunAndWritesNoNonFiniteNumber
 // Case 2: an initial velocity of 1e300: the message names where the first non-finite value appeared.
 TEST_F(RunRobustness, AnOverflowingInitialStateStopsTheRunNamingTheCause) {
   const auto out = directory_ / "out";
-  const Outcome o = run("run " + kScene + kSmall + " --only insulated --set 'time.v0=[1e300,1e300]' --out " +
-                        quoted(out.string()));
+  const Outcome o =
+      run("run " + kScene + kSmall + " --only insulated --set 'time.v0=[1e300,1e300]' --out " + quoted(out.string()));
   EXPECT_EQ(o.status, 1) << o.err;
   EXPECT_EQ(o.err.find("JSON"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("not finite"), std::string::npos) << o.err;
@@ -206,13 +207,15 @@ TEST_F(RunRobustness, RunningOutOfMemoryStopsTheRunNamingThePhase) {
                                 quoted(out.string());
     const auto log = directory_ / "oom.txt";
     // timeout: a hang under the memory limit (as OpenBLAS's buffer allocation does) fails here, exit 124.
-    const int raw = std::system(("ulimit -v " + std::string(limit_kib) + "; timeout -k 10 120 " +
-                                 std::string(PIEZOCONTACT_RUNNER) + " " + command + " >" + quoted(log.string()) + " 2>&1")
-                                    .c_str());
+    const int raw =
+        std::system(("ulimit -v " + std::string(limit_kib) + "; timeout -k 10 120 " + std::string(PIEZOCONTACT_RUNNER) +
+                     " " + command + " >" + quoted(log.string()) + " 2>&1")
+                        .c_str());
     ASSERT_TRUE(WIFEXITED(raw)) << limit_kib;
     EXPECT_EQ(WEXITSTATUS(raw), 1) << limit_kib << " KiB: " << read_text(log);
     const std::string said = read_text(log);
-    EXPECT_TRUE(std::regex_search(said, std::regex("out of memory (in step 1|while building|while reserving the BLAS)")))
+    EXPECT_TRUE(
+        std::regex_search(said, std::regex("out of memory (in step 1|while building|while reserving the BLAS)")))
         << said;
     if (std::filesystem::exists(out / "conductive" / "summary.json")) {
       EXPECT_NE(read_text(out / "conductive" / "summary.json").find("\"completed\": false"), std::string::npos);
@@ -230,8 +233,7 @@ TEST_F(RunRobustness, TwoProcessesRunningOneSceneWriteTheSameResults) {
   for (const char* name : {"first", "second"}) {
     const auto out = directory_ / name;
     const std::string command = "run " + kScene + " --set mesh.nx=240 --set mesh.ny=80 --set time.steps=3 " +
-                                "--only conductive --no-sweep --quiet --out " +
-                                quoted(out.string());
+                                "--only conductive --no-sweep --quiet --out " + quoted(out.string());
     ASSERT_EQ(std::system((std::string(PIEZOCONTACT_RUNNER) + " " + command + " >/dev/null 2>&1").c_str()), 0);
     histories.push_back(read_text(out / "conductive" / "history.csv"));
   }
@@ -276,10 +278,10 @@ TEST_F(RunRobustness, AKilledRunResumesToTheSameResults) {
   const Outcome reference = run("run " + kScene + steps + kResumable + " --out " + quoted(whole.string()));
   ASSERT_EQ(reference.status, 0) << reference.err;
 
-  const pid_t pid = start_long_run(killed, directory_ / "killed.txt",
-                                   {"--set", "time.steps=3000", "--set", "time.max_wall_seconds=0", "--set",
-                                    "output.checkpoint_every=25", "--only", "conductive", "--no-sweep", "--set",
-                                    "output.vtu_every=50", "--quiet"});
+  const pid_t pid = start_long_run(
+      killed, directory_ / "killed.txt",
+      {"--set", "time.steps=3000", "--set", "time.max_wall_seconds=0", "--set", "output.checkpoint_every=25", "--only",
+       "conductive", "--no-sweep", "--set", "output.vtu_every=50", "--quiet"});
   ASSERT_GE(pid, 0);
   wait_for(killed / "conductive" / "history.csv", 300 * 60);  // some 300 steps in
   kill(pid, SIGKILL);
@@ -318,7 +320,8 @@ TEST_F(RunRobustness, ARunStoppedByItsBudgetResumesToTheSameResults) {
 TEST_F(RunRobustness, ARerunNeverMixesItsFilesWithAnEarlierRunsAndFlagsForeignOnes) {
   const auto out = directory_ / "out", fresh = directory_ / "fresh";
   const std::string small = kScene + " --set mesh.nx=6 --set mesh.ny=2 --only conductive --no-sweep --quiet";
-  ASSERT_EQ(run("run " + small + " --set time.steps=20 --set output.vtu_every=1 --out " + quoted(out.string())).status, 0);
+  ASSERT_EQ(run("run " + small + " --set time.steps=20 --set output.vtu_every=1 --out " + quoted(out.string())).status,
+            0);
   ASSERT_TRUE(std::filesystem::exists(out / "conductive" / "paper2d_000020.vtu"));
   // What a run of a version without a manifest would have left, and a file of the user's.
   std::filesystem::remove(out / "manifest.json");

@@ -45,12 +45,14 @@ TEST_F(SceneModes, TableAndShapesAreWrittenAndP1AndP2Agree) {
 
 TEST_F(SceneModes, OpenCircuitWithoutElectrodesIsRefused) {
   const Scene scene = load_scene_file(testing::kPaperScene, {"mesh.nx=6", "mesh.ny=2"});
-  testing::expect_error_containing([&] { write_scene_modes(scene, "", {}, true); }, {"--open-circuit", "no electrodes"});
+  testing::expect_error_containing([&] { write_scene_modes(scene, "", {}, true); },
+                                   {"--open-circuit", "no electrodes"});
 }
 
 TEST_F(SceneModes, AMasslessSceneIsRefused) {
   const Scene scene = load_scene_file(testing::kPaperScene, {"mesh.nx=6", "mesh.ny=2", "material.rho=0"});
-  testing::expect_error_containing([&] { write_scene_modes(scene, "", {}); }, {"material.rho = 0", "no vibration modes"});
+  testing::expect_error_containing([&] { write_scene_modes(scene, "", {}); },
+                                   {"material.rho = 0", "no vibration modes"});
 }
 
 }  // namespace

@@ -17,10 +17,11 @@ TEST(SceneOutputGrid, ImpossibleCountsAreRefusedNamingTheKeyAndValue) {
                                    {"output.grid.x[2]", "1e+12"});
   testing::expect_error_containing([] { load_scene_file(kScene, {"output.grid.y=[0,0.01,2.5]"}); },
                                    {"output.grid.y[2]", "2.5"});
-  testing::expect_error_containing([] { load_scene_file(kScene, {"output.grid.x=[0,0.03,0]"}); },
-                                   {"output.grid.x[2]"});
+  testing::expect_error_containing([] { load_scene_file(kScene, {"output.grid.x=[0,0.03,0]"}); }, {"output.grid.x[2]"});
   testing::expect_error_containing(
-      [] { load_scene_file(kScene, {"output.grid.x=[0,0.03,100000]", "output.grid.y=[0,0.01,1000]"}); },
+      [] {
+        load_scene_file(kScene, {"output.grid.x=[0,0.03,100000]", "output.grid.y=[0,0.01,1000]"});
+      },
       {"output.grid", "limit"});
 }
 

@@ -21,7 +21,8 @@ using testing::expect_error_containing;
 
 const std::string kScene = std::string(PIEZOCONTACT_SCENES) + "/paper2d.json";
 const std::string kKnown =
-    "known: v, u, phi, contact_pressure, contact_state, strain, stress, von_mises, electric_field, electric_displacement";
+    "known: v, u, phi, contact_pressure, contact_state, strain, stress, von_mises, electric_field, "
+    "electric_displacement";
 
 // The paper scene without its piezoelectric tensors: a purely mechanical body on an insulated foundation.
 Scene mechanical_scene(const std::vector<std::string>& overrides) {

@@ -7,8 +7,8 @@
 #include <tuple>
 #include <vector>
 
-#include "models/scene/json.hpp"
 #include "models/piezo/energy_books.hpp"
+#include "models/scene/json.hpp"
 #include "models/scene/scene_runner.hpp"
 #include "support/error_and_temp_dir.hpp"
 #include "support/run_model.hpp"
@@ -36,7 +36,8 @@ TEST(ShippedScenes, LoadAndRunAFewSteps) {
 // electrodes, the slider's approach (a moving foundation doing work through the contact) and Coulomb
 // friction, every entry read from its brick's residual.
 TEST(ShippedScenes, MotorEnergyBooksBalanceEveryStep) {
-  const Scene scene = load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/motor2d.json", {"time.steps=80", "time.T=4e-5"});
+  const Scene scene =
+      load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/motor2d.json", {"time.steps=80", "time.T=4e-5"});
   PiezoContactSpec spec = scene.spec;
   spec.foundation = scene.foundations.front().law;
   PiezoContactModel built = build_piezo_contact_model(spec);
@@ -61,8 +62,8 @@ TEST(ShippedScenes, MotorEnergyBooksBalanceEveryStep) {
 using ShippedSceneResults = testing::TemporaryDirectoryTest;
 
 TEST_F(ShippedSceneResults, AGmshMeshIsDescribedInTheSummary) {
-  for (const auto& [name, file, cell_type] : {std::tuple{"strip2d.json", "strip2d.geo", "triangle"},
-                                              std::tuple{"box3d.json", "box3d.geo", "tetrahedron"}}) {
+  for (const auto& [name, file, cell_type] :
+       {std::tuple{"strip2d.json", "strip2d.geo", "triangle"}, std::tuple{"box3d.json", "box3d.geo", "tetrahedron"}}) {
     const Scene scene = load_scene_file(std::string(PIEZOCONTACT_SCENES) + "/" + name,
                                         {"time.steps=1", "time.T=0.001", "mesh.size_factor=2"});
     const std::string dir = (directory_ / scene.name).string();

@@ -64,14 +64,17 @@ TEST(PaperSceneSpaceError, TheEstimateMatchesTheTrueSpatialError) {
       const char* field;
       GradientMeasure measure;
       const char* weight;
-    } fields[] = {{"u", GradientMeasure::Strain, "B"}, {"v", GradientMeasure::Strain, "A"}, {"phi", GradientMeasure::Gradient, "beta"}};
+    } fields[] = {{"u", GradientMeasure::Strain, "B"},
+                  {"v", GradientMeasure::Strain, "A"},
+                  {"phi", GradientMeasure::Gradient, "beta"}};
     for (const auto& f : fields) {
       const SpaceErrorField* e = estimate.field(f.field);
       ASSERT_NE(e, nullptr) << f.field;
       // The summary's is relative to the field's largest norm over the run, at least the final state's.
       EXPECT_GT(coarse->result.space_error.at(f.field), 0) << f.field;
       EXPECT_LE(coarse->result.space_error.at(f.field), e->relative() * (1 + 1e-12)) << f.field;
-      EXPECT_DOUBLE_EQ(coarse->result.space_error.at(f.field) * coarse->result.space_error_scale.at(f.field), e->estimate);
+      EXPECT_DOUBLE_EQ(coarse->result.space_error.at(f.field) * coarse->result.space_error_scale.at(f.field),
+                       e->estimate);
       const double truth = energy_difference(reference->run->model(), m, f.field, f.measure, m.constant(f.weight));
       std::printf("paper scene %d x %d, %s: estimate %.3e, true %.3e, effectivity %.3f (relative estimate %.3e)\n", nx,
                   nx / 3, f.field, e->estimate, truth, e->estimate / truth, e->relative());
@@ -91,8 +94,9 @@ TEST(PaperSceneAdaptiveMesh, BeatsTheUniformMeshAtFewerDofs) {
   auto adaptive = run_paper(15, 5);
   for (int round = 0; round < 6; ++round) {
     const Model& m = adaptive->run->model();
-    const MeshBisection refined = bisect(m.mesh(), dorfler_marking(piezo_space_error(m).relative_cell_indicators(), 0.5),
-                                         round == 0 ? RefinementEdge::Longest : RefinementEdge::OppositeVertexZero);
+    const MeshBisection refined =
+        bisect(m.mesh(), dorfler_marking(piezo_space_error(m).relative_cell_indicators(), 0.5),
+               round == 0 ? RefinementEdge::Longest : RefinementEdge::OppositeVertexZero);
     adaptive = run_paper(15, 5, refined.mesh);
   }
   const Model& a = adaptive->run->model();
@@ -101,8 +105,8 @@ TEST(PaperSceneAdaptiveMesh, BeatsTheUniformMeshAtFewerDofs) {
   std::printf("adaptive: %d cells, %d dofs; uniform 30 x 10: %d dofs\n", a.mesh().num_cells(), adaptive->result.ndof,
               uniform->result.ndof);
   EXPECT_LT(adaptive->result.ndof, uniform->result.ndof);
-  for (const auto& [field, measure, weight] : {std::tuple{"u", GradientMeasure::Strain, "B"},
-                                               std::tuple{"phi", GradientMeasure::Gradient, "beta"}}) {
+  for (const auto& [field, measure, weight] :
+       {std::tuple{"u", GradientMeasure::Strain, "B"}, std::tuple{"phi", GradientMeasure::Gradient, "beta"}}) {
     const double on_adaptive = energy_difference(r, a, field, measure, r.constant(weight));
     const double on_uniform = energy_difference(r, u, field, measure, r.constant(weight));
     std::printf("%s: error %.3e adaptive, %.3e uniform\n", field, on_adaptive, on_uniform);
@@ -123,7 +127,8 @@ TEST_F(SpaceErrorOutput, TheSummaryAndTheVtuHoldTheEstimate) {
   const std::string vtu = testing::read_text(directory_ / "conductive" / "paper2d_000010.vtu");
   const SpaceErrorEstimate estimate = piezo_space_error(run.model());
   for (const char* field : {"u", "v", "phi"}) {
-    const std::vector<double> cells = testing::find_array(vtu, "CellData", std::string("space_error_") + field).doubles();
+    const std::vector<double> cells =
+        testing::find_array(vtu, "CellData", std::string("space_error_") + field).doubles();
     ASSERT_EQ(cells.size(), 150u) << field;
     double squares = 0;
     for (double c : cells) squares += c * c;

@@ -76,8 +76,8 @@ TEST_P(PaperSceneTimeError, TheEstimatesMatchTheTrueTimeError) {
     const Eigen::VectorXd& y = coarse.values.at(f.field);
     const Eigen::VectorXd reference = 2 * finer.values.at(f.field) - fine.values.at(f.field);
     const double truth = norm.rms(f.field, y - reference) / f.scale;
-    std::printf("paper scene (15 x 5, %d steps) %s: estimate %.3e, true %.3e, effectivity %.3f\n", steps, f.field.c_str(),
-                f.global, truth, f.global / truth);
+    std::printf("paper scene (15 x 5, %d steps) %s: estimate %.3e, true %.3e, effectivity %.3f\n", steps,
+                f.field.c_str(), f.global, truth, f.global / truth);
     EXPECT_GE(f.global / truth, 0.5) << f.field;
     EXPECT_LE(f.global / truth, 3.0) << f.field;
   }

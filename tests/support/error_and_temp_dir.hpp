@@ -13,8 +13,7 @@
 
 namespace pc::testing {
 
-template <class Action>
-void expect_error_containing(Action action, const std::vector<std::string>& parts) {
+template <class Action> void expect_error_containing(Action action, const std::vector<std::string>& parts) {
   try {
     action();
     ADD_FAILURE() << "no pc::Error thrown";
@@ -27,8 +26,9 @@ void expect_error_containing(Action action, const std::vector<std::string>& part
 class TemporaryDirectoryTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    directory_ = std::filesystem::temp_directory_path() /
-                 message("piezocontact_", ::getpid(), "_", ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    directory_ =
+        std::filesystem::temp_directory_path() /
+        message("piezocontact_", ::getpid(), "_", ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(directory_);
     std::filesystem::create_directories(directory_);
   }

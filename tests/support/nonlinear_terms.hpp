@@ -17,8 +17,7 @@ namespace pc::testing {
 
 // A nonlinear diffusion-reaction on a vector field: f1 = (1 + |u|^2) grad u, f0 = u_0^3.
 struct NonlinearDiffusion {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     S size = S(1);
     for (int c = 0; c < in.dim; ++c) size += in.value[0][c] * in.value[0][c];
     for (int c = 0; c < in.dim; ++c) {
@@ -30,8 +29,7 @@ struct NonlinearDiffusion {
 
 // A face reaction u_c^2 n_c.
 struct FaceReaction {
-  template <class S>
-  void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
+  template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     for (int c = 0; c < in.dim; ++c) out.f0[0][c] = in.value[0][c] * in.value[0][c] * in.normal[c];
   }
 };
@@ -44,8 +42,8 @@ std::pair<Eigen::VectorXd, CsrMatrix> assembled_term(const FESpace& space, Integ
   auto term = std::make_shared<PointwiseTerm<Kernel>>("t", integration,
                                                       std::vector<FieldUse>{{"u", integration == Integration::Cells}},
                                                       std::vector<int>{0}, std::vector<Coupling>{{0, 0}}, Kernel{});
-  auto geometry = std::make_shared<const RegionGeometry>(space.mesh(), region, term->quadrature_degree(space.order()),
-                                                         owned);
+  auto geometry =
+      std::make_shared<const RegionGeometry>(space.mesh(), region, term->quadrature_degree(space.order()), owned);
   TermAssembly assembly(term, geometry, {&space});
   const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(space.num_dofs(), -0.7, 1.3);
   Eigen::VectorXd r = Eigen::VectorXd::Zero(space.num_dofs());

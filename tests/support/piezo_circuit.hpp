@@ -19,8 +19,10 @@ inline void set_piezo_tensors(PiezoContactSpec& spec, const PiezoTensors& t, boo
 // charge (open circuit).
 inline void set_circuit(PiezoContactSpec& spec, const std::string& ground, const std::string& far, bool open_circuit) {
   spec.grounded = {ground};
-  if (open_circuit) spec.electrodes = {floating_electrode(far, far)};
-  else spec.grounded.push_back(far);
+  if (open_circuit)
+    spec.electrodes = {floating_electrode(far, far)};
+  else
+    spec.grounded.push_back(far);
 }
 
 }  // namespace pc::testing

@@ -129,7 +129,8 @@ inline PiezoMmsProblem build_piezo_mms_problem(std::shared_ptr<const Mesh> mesh,
       },
       LoadTime::Varying));
   m.add_brick(std::make_shared<VolumeChargeBrick>(
-      [=](const double* x, double t, double* out) { out[0] = g(t) * exact.div_displacement(exact.hessian(x)); }, LoadTime::Varying));
+      [=](const double* x, double t, double* out) { out[0] = g(t) * exact.div_displacement(exact.hessian(x)); },
+      LoadTime::Varying));
   m.add_brick(std::make_shared<DirichletBrick>(
       "v", "boundary", std::vector<int>{},
       [=](const double* x, double t, double* out) {

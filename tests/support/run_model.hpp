@@ -21,8 +21,7 @@ inline void run(PiezoContactModel& built, double end, int steps,
   options.step = end / steps;
   NewtonSolver newton;
   StepperCallbacks callbacks;
-  if (built.electric)
-    callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, *built.scheme, newton); };
+  if (built.electric) callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, *built.scheme, newton); };
   if (after_step) {
     callbacks.on_output = [&](const Model& m, const StepRecord& r) {
       if (r.step == 0 && built.electric) after_step(m);

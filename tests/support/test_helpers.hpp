@@ -13,8 +13,7 @@
 namespace pc::testing {
 
 // The message of the pc::Error thrown by `action`, or "(no error)".
-template <class F>
-std::string error_of(F&& action) {
+template <class F> std::string error_of(F&& action) {
   try {
     action();
   } catch (const Error& e) {
