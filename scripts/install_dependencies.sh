@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages piezocontact needs; does nothing when all are present.
-# Usage: scripts/install_dependencies.sh [mpi] [ccache]   (mpi: also OpenMPI and the MPI build of MUMPS;
-# ccache: also ccache, which the build uses when it is there)
+# Usage: scripts/install_dependencies.sh [mpi] [ccache] [format]   (mpi: also OpenMPI and the MPI build of
+# MUMPS; ccache: also ccache, which the build uses when it is there; format: clang-format, for
+# scripts/check_format.sh)
 # Run as root (or with sudo available).
 set -euo pipefail
 
@@ -16,7 +17,8 @@ for extra in "$@"; do
   case "$extra" in
     mpi) packages+=(libmumps-dev libopenmpi-dev openmpi-bin) ;;
     ccache) packages+=(ccache) ;;
-    *) echo "install_dependencies.sh: unknown extra '$extra' (known: mpi, ccache)" >&2; exit 2 ;;
+    format) packages+=(clang-format) ;;
+    *) echo "install_dependencies.sh: unknown extra '$extra' (known: mpi, ccache, format)" >&2; exit 2 ;;
   esac
 done
 
