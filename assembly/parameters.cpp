@@ -21,9 +21,15 @@ std::string Range::describe() const {
   return message("in ", lower_open ? "(" : "[", lower, ", ", upper, upper_open ? ")" : "]");
 }
 
+void require_in_range(const Range& range, double value, const std::string& subject) {
+  if (range.contains(value)) return;
+  const std::string bound = range.describe();
+  const std::string expected = std::isfinite(value) ? bound : bound == "finite" ? bound : "finite and " + bound;
+  fail(subject, " must be ", expected, ", got ", value);
+}
+
 void check_parameter(const ParameterDeclaration& declaration, double value, const std::string& where) {
-  require(declaration.range.contains(value), where, ": ", declaration.name, " = ", value, " must be ",
-          declaration.range.describe() == "finite" ? "finite" : "finite and " + declaration.range.describe());
+  require_in_range(declaration.range, value, where + ": " + declaration.name);
 }
 
 const ParameterDeclaration* find_parameter(const std::vector<ParameterDeclaration>& declarations,

@@ -24,6 +24,8 @@ struct Range {
   static constexpr Range positive() { return {0, std::numeric_limits<double>::infinity(), true, false}; }
   // (a, b]
   static constexpr Range left_open(double a, double b) { return {a, b, true, false}; }
+  // [a, b]
+  static constexpr Range closed(double a, double b) { return {a, b, false, false}; }
   // Finite and inside the interval.
   bool contains(double value) const;
   // ">= 0", "> 0", "in (0, 1]", "finite".
@@ -47,7 +49,10 @@ struct Choice {
   ParameterValues parameters;
 };
 
-// Throws pc::Error "<where>: <name> = <value> must be <range>" when the value is outside the range.
+// The one range check of a number, a declared parameter's or a scene's: throws pc::Error
+// "<subject> must be >= 0, got -1" (or "must be finite and >= 0, got nan") when the value is outside.
+void require_in_range(const Range& range, double value, const std::string& subject);
+// require_in_range with the subject "<where>: <name>".
 void check_parameter(const ParameterDeclaration& declaration, double value, const std::string& where);
 // The declaration of that name, or null.
 const ParameterDeclaration* find_parameter(const std::vector<ParameterDeclaration>& declarations,

@@ -27,7 +27,7 @@ BoundaryDashpotBrick::BoundaryDashpotBrick(std::string region, std::string datum
 
 void BoundaryDashpotBrick::update(const DataView& data) {
   const double c_b = data.scalar(datum_);
-  require(std::isfinite(c_b) && c_b >= 0, "brick '", name(), "': ", datum_, " = ", c_b, " must be finite and >= 0");
+  require_in_range(Range::at_least(0), c_b, message("brick '", name(), "': ", datum_));
   *c_b_ = c_b;
 }
 

@@ -404,28 +404,22 @@ std::vector<Json::Member> Json::members() const {
   return members;
 }
 
-double Json::as_positive() const {
+double Json::as_number(const Range& range, std::string_view unit) const {
   const double value = as_number();
-  require(value > 0, "scene: ", where(path_), " must be > 0, got ", format_number(value));
+  const std::string unit_note = unit.empty() || unit == "1" ? "" : " (" + std::string(unit) + ")";
+  require_in_range(range, value, "scene: " + where(path_) + unit_note);
   return value;
 }
 
-double Json::as_number_at_least(double min) const {
-  const double value = as_number();
-  require(value >= min, "scene: ", where(path_), " must be >= ", format_number(min), ", got ", format_number(value));
-  return value;
-}
+double Json::as_positive() const { return as_number(Range::positive()); }
 
-double Json::as_number_in(double min, double max) const {
-  const double value = as_number();
-  require(value >= min && value <= max, "scene: ", where(path_), " must be in [", format_number(min), ", ",
-          format_number(max), "], got ", format_number(value));
-  return value;
-}
+double Json::as_number_at_least(double min) const { return as_number(Range::at_least(min)); }
+
+double Json::as_number_in(double min, double max) const { return as_number(Range::closed(min, max)); }
 
 int Json::as_int_at_least(int min) const {
   const int value = as_int();
-  require(value >= min, "scene: ", where(path_), " must be an integer >= ", min, ", got ", value);
+  as_number(Range::at_least(min));
   return value;
 }
 

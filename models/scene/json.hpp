@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "assembly/parameters.hpp"
+
 namespace pc {
 
 class Json {
@@ -69,7 +71,10 @@ class Json {
   std::vector<Json> as_array() const;
   std::vector<Member> members() const;
 
-  // Range-checked numbers: the error names the bound, e.g. "scene: 'time.T' must be > 0, got -1".
+  // A number in the range, the one range check of a scene value: the error names the path, the unit
+  // when one is given ("1" is none), the bound and the value, e.g. "scene: 'contact.c_nu' (Pa s/m) must
+  // be >= 0, got -1". The others below are its common ranges.
+  double as_number(const Range& range, std::string_view unit = {}) const;
   double as_positive() const;
   double as_number_at_least(double min) const;
   double as_number_in(double min, double max) const;

@@ -16,9 +16,7 @@ ParameterValues read_parameters(const Json& object, const ChosenEntry& entry) {
       values[d.name] = *d.default_value;
       continue;
     }
-    const double number = value->as_number();
-    check_parameter(d, number, "scene: '" + value->path() + "'");
-    values[d.name] = number;
+    values[d.name] = value->as_number(d.range, d.unit);
   }
   return values;
 }

@@ -365,7 +365,8 @@ template <class Law> void expect_rejected(const Law& law, const std::string& par
       const std::string what = e.what();
       EXPECT_NE(what.find("brick '" + b.brick->name() + "'"), std::string::npos) << what;
       EXPECT_NE(what.find("model constant '" + constant + "'"), std::string::npos) << what;
-      EXPECT_NE(what.find(parameter + " = " + value + " must be finite"), std::string::npos) << what;
+      EXPECT_NE(what.find(parameter + " must be "), std::string::npos) << what;
+      EXPECT_NE(what.find(", got " + value), std::string::npos) << what;
     }
   }
 }
@@ -461,7 +462,7 @@ TEST(LawChecker, CatchesEachBrokenRule) {
   EXPECT_FALSE(out_of_range.ok());
   std::ostringstream range_text;
   range_text << out_of_range;
-  EXPECT_NE(range_text.str().find("c_nu = -1 must be finite and >= 0"), std::string::npos) << range_text.str();
+  EXPECT_NE(range_text.str().find("c_nu must be >= 0, got -1"), std::string::npos) << range_text.str();
   EXPECT_FALSE(check_friction_law(PressureBlindCoulomb{}).ok());
   EXPECT_FALSE(check_foundation_law(NonMonotoneFoundation{}).ok());
   const auto report = check_scalar_law(DetachedDerivative{}, {.name = "detached"});

@@ -135,7 +135,7 @@ TEST(Json, IntegersMustBeIntegralAndInRange) {
   EXPECT_THAT(error_of([&] { root["b"].as_int(); }), HasSubstr("got 3000000000"));
   EXPECT_EQ(root["c"].as_int(), -7);
   EXPECT_EQ(root["d"].as_int(), 100);
-  EXPECT_EQ(error_of([&] { root["c"].as_int_at_least(1); }), "scene: 'c' must be an integer >= 1, got -7");
+  EXPECT_EQ(error_of([&] { root["c"].as_int_at_least(1); }), "scene: 'c' must be >= 1, got -7");
 }
 
 TEST(Json, RangeChecksNameTheBound) {

@@ -50,7 +50,7 @@ TEST(Plugins, ALawOfAPluginIsNamedCheckedListedAndRunLikeABuiltInOne) {
       error_of([&] {
         scene_with_plugins("[\"" + path + "\"]", {"contact.law_normal=quadratic_damped", "contact.c_nu=-1"});
       }),
-      "'contact.c_nu': c_nu = -1 must be finite and >= 0");
+      "'contact.c_nu' (Pa s^2/m^2) must be >= 0, got -1");
   EXPECT_CONTAINS(error_of([&] {
                     scene_with_plugins("[\"" + path + "\"]", {"contact.law_normal=quadratic_damped", "contact.m=2"});
                   }),

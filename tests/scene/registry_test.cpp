@@ -70,8 +70,8 @@ TEST(Registry, CheckRefusesWhatRunWouldRefuseWithTheKeyAndTheValue) {
       {{"solver.condensation=diagonal"},
        "'solver.condensation': unknown condensation 'diagonal' (known: auto, columns, krylov, schur)"},
       {{"solver.linear=superlu"}, "'solver.linear': unknown linear solver 'superlu'"},
-      {{"contact.c_nu=-1"}, "'contact.c_nu': c_nu = -1 must be finite and >= 0"},
-      {{"foundation.conductive.k_e=-2"}, "'foundation.conductive.k_e': k_e = -2 must be finite and >= 0"},
+      {{"contact.c_nu=-1"}, "'contact.c_nu' (Pa s/m) must be >= 0, got -1"},
+      {{"foundation.conductive.k_e=-2"}, "'foundation.conductive.k_e' (C/(V m^2)) must be >= 0, got -2"},
       {{"contact.law_tangential=coulomb", "contact.mu=0.3"},
        "'contact.c_tau' is read by law_tangential viscous, not by the chosen law_normal 'linear_damped' and "
        "law_tangential 'coulomb'"},
