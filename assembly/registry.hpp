@@ -18,6 +18,7 @@
 
 #include "assembly/error.hpp"
 #include "assembly/parameters.hpp"
+#include "assembly/suggestions.hpp"
 
 namespace pc {
 
@@ -51,10 +52,10 @@ template <class Factory> class Registry {
       if (e.name == name) return &e;
     return nullptr;
   }
-  // Throws "<where>: unknown <kind> 'name' (known: a, b, c)".
+  // Throws "<where>: unknown <kind> 'name' (known: a, b, c)", and "; did you mean 'b'?" when one is close.
   const Entry& at(const std::string& name, const std::string& where) const {
     if (const Entry* e = find(name)) return *e;
-    fail(where, ": unknown ", kind_, " '", name, "' (known: ", names_text(), ")");
+    fail(where, ": unknown ", kind_, " '", name, "' (known: ", names_text(), ")", did_you_mean(name, names()));
   }
   // Sorted by name.
   const std::vector<Entry>& entries() const { return entries_; }

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "assembly/error.hpp"
+#include "assembly/suggestions.hpp"
 
 namespace pc {
 
@@ -600,7 +601,17 @@ void require_known_keys(const Json& object, const std::vector<std::string>& allo
   if (unknown.empty()) return;
   std::string listed;
   for (const std::string& path : unknown) listed += (listed.empty() ? "'" : ", '") + path + "'";
-  fail("scene: unknown key", unknown.size() > 1 ? "s " : " ", listed, " (known: ", join_sorted(allowed), ")");
+  // A known key close to an unknown one, as git and cargo suggest: "; did you mean 'c_nu'?" (with several
+  // unknown keys, "'c_nu' for 'c_nuu', ..."); nothing when no known key is close.
+  std::string suggested;
+  for (const std::string& key : object.keys()) {
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    if (const std::vector<std::string> closest = closest_names(key, allowed); !closest.empty())
+      suggested += message(suggested.empty() ? "; did you mean " : ", ", quoted_alternatives(closest),
+                           unknown.size() > 1 ? " for '" + key + "'" : "");
+  }
+  fail("scene: unknown key", unknown.size() > 1 ? "s " : " ", listed, " (known: ", join_sorted(allowed), ")", suggested,
+       suggested.empty() ? "" : "?");
 }
 
 void require_known_keys(const Json& object, std::initializer_list<std::string_view> allowed) {

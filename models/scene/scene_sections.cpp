@@ -11,6 +11,7 @@
 #include "assembly/gmsh_import.hpp"
 #include "assembly/mesh_generators.hpp"
 #include "assembly/point_locator.hpp"
+#include "assembly/suggestions.hpp"
 #include "bricks/brick_registry.hpp"
 #include "bricks/law_registry.hpp"
 #include "bricks/piezo_materials.hpp"
@@ -29,6 +30,46 @@ std::vector<std::string> names_of(const Json& j) {
   std::vector<std::string> names;
   for (const Json& item : j.as_array()) names.push_back(item.as_string());
   return names;
+}
+
+// Every key a scene gives is used or refused: a key that only another variant of its section reads (a gmsh
+// mesh's size_factor in a generated one, a box's nz in a rectangle) is refused saying why, not ignored.
+void refuse_keys(const Json& object, std::initializer_list<const char*> keys, const std::string& why) {
+  for (const char* key : keys)
+    if (const auto value = object.find(key)) fail("scene: '", value->path(), "' ", why);
+}
+
+// regions is read and names no contact region: the keys of contact only would then be ignored.
+bool lacks_contact_region(const Json& scene_json) {
+  const auto regions = scene_json.find("regions");
+  return regions && regions->is_object() && !regions->contains("contact");
+}
+
+bool is_geo_script(const std::string& file) {
+  std::string extension = std::filesystem::path(file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return extension == ".geo";
+}
+
+// The mesh keys of the variants this mesh is not: a generator's in a gmsh mesh, a script's with a .msh
+// file, a gmsh file's in a generated mesh, a box's in a rectangle.
+void refuse_other_mesh_keys(const Json& m) {
+  if (const auto file = m.find("gmsh")) {
+    const std::string name = file->as_string();
+    refuse_keys(m, {"cell", "x", "y", "z", "nx", "ny", "nz"},
+                "applies to generated meshes (mesh.generator); this scene reads the gmsh file '" + name + "'");
+    if (!is_geo_script(name))
+      refuse_keys(m, {"size_factor"},
+                  "scales the mesh sizes of a .geo script; this scene reads the mesh file '" + name + "'");
+    return;
+  }
+  const auto generator = m.find("generator");
+  if (!generator || !generator->is_string()) return;  // refused by build_mesh
+  const std::string shape = generator->as_string();
+  if (shape != "rectangle" && shape != "box") return;
+  refuse_keys(m, {"size_factor", "max_seconds"}, "applies to gmsh meshes; this scene generates a " + shape);
+  if (shape == "rectangle") refuse_keys(m, {"z", "nz"}, "applies to a box; this scene generates a rectangle");
 }
 
 // Refuses a generated mesh whose run would not fit in memory: the machine's available memory, or the
@@ -67,6 +108,7 @@ std::shared_ptr<const Mesh> build_mesh(const Json& scene_json, const Json& m, co
   require(!(m.contains("gmsh") && m.contains("generator")),
           "scene: 'mesh' gives both generator and gmsh: a mesh "
           "is generated or read, not both");
+  refuse_other_mesh_keys(m);
   if (const auto file = m.find("gmsh")) {
     std::filesystem::path path = file->as_string();
     if (path.is_relative()) path = std::filesystem::path(directory) / path;
@@ -192,14 +234,18 @@ AdaptiveSteps read_adaptive_steps(const Json& a, double end_time) {
 // for a piezoelectric body.
 std::vector<std::string> read_vtu_fields(const Json& list, bool electric) {
   std::string known;
-  for (const SceneVtuField& f : scene_vtu_fields()) known += (known.empty() ? "" : ", ") + f.name;
+  std::vector<std::string> known_names;
+  for (const SceneVtuField& f : scene_vtu_fields()) {
+    known += (known.empty() ? "" : ", ") + f.name;
+    known_names.push_back(f.name);
+  }
   std::vector<std::string> names;
   for (const Json& item : list.as_array()) {
     const std::string name = item.as_string();
     const auto field = std::find_if(scene_vtu_fields().begin(), scene_vtu_fields().end(),
                                     [&](const SceneVtuField& f) { return f.name == name; });
     require(field != scene_vtu_fields().end(), "scene: '", item.path(), "' = '", name,
-            "' is not a field of the VTU files (known: ", known, ")");
+            "' is not a field of the VTU files (known: ", known, ")", did_you_mean(name, known_names));
     require(electric || !field->electric, "scene: '", item.path(), "' = '", name,
             "': the body is not piezoelectric "
             "(no material.piezo_E), so its VTU files have no ",
@@ -248,6 +294,40 @@ void read_output_grid(const Json& g, int dim, SceneGrid& grid) {
     const auto& z = axes[2].second;
     grid.z0 = z[0], grid.z1 = z[1], grid.nz = int(z[2]);
   }
+}
+
+// The solver keys that the chosen path does not read: those of the condensed solves without them, the
+// contact-dof Newton off the schur path, the watchdog without a line search.
+void refuse_unread_solver_keys(const Json& s, const NewtonOptions& newton) {
+  if (newton.condensed_max_fraction <= 0)
+    refuse_keys(s, {"condensed_max_dofs", "contact_newton"},
+                "applies to condensed solves; solver.condensed = false factorises the whole system at every "
+                "iteration");
+  else if (newton.condensation != "schur" && newton.condensation != "auto")
+    refuse_keys(s, {"contact_newton"},
+                "applies to the schur path (solver.condensation schur, or auto); this scene's is '" +
+                    newton.condensation + "'");
+  if (!newton.line_search)
+    refuse_keys(s, {"watchdog"}, "applies to the line search; solver.line_search = false takes full steps");
+}
+
+// The output keys that nothing of this scene reads: the sweep's steps without a sweep, the contact
+// nodes' outputs without a contact region, energy books where no run keeps them.
+void refuse_unread_output_keys(const scene_detail::SceneReading& r, const Json& o) {
+  if (r.scene.output.phi_f_sweep.empty())
+    refuse_keys(o, {"sweep_steps"}, "is the steps of each run of the output.phi_f_sweep sweep, which this scene lacks");
+  if (lacks_contact_region(r.json))
+    refuse_keys(o, {"contact_history", "slip_threshold"},
+                "applies to a contact region (regions.contact); this scene has none");
+  const auto books = o.find("energy_books");
+  if (!books || !books->as_bool()) return;
+  // With target_error the mode chooses the scheme, and the books are kept if it is backward Euler.
+  const std::string& scheme = r.spec.scheme.name;
+  require(scheme == "backward_euler" || r.json.contains("target_error"), "scene: '", books->path(),
+          "' = true: the energy books are backward Euler's identities, and time.scheme is '", scheme, "'");
+  const bool at_rest = std::all_of(r.scene.u0.begin(), r.scene.u0.end(), [](double c) { return c == 0; });
+  require(r.electric || at_rest, "scene: '", books->path(),
+          "' = true: a purely mechanical body's books start at rest, and time.u0 is not 0");
 }
 
 }  // namespace
@@ -447,6 +527,11 @@ void read_loads(SceneReading& r) {
                                   time == "constant" ? LoadTime::Constant : LoadTime::Varying});
       }
     }
+    // A charge is a load on the potential, which a purely mechanical body has not.
+    for (const char* key : {"q0", "q_b"})
+      if (const auto q = loads.find(key))
+        require(electric || q->as_number() == 0, "scene: '", q->path(), "' = ", q->as_number(),
+                ": a purely mechanical body (no material.piezo_E) has no charge to load");
     if (const auto q0 = loads.find("q0"); q0 && q0->as_number() != 0 && electric)
       spec.volume_charge = make_load({q0->as_number()}, "constant");
     if (const auto qb = loads.find("q_b"); qb && qb->as_number() != 0 && electric)
@@ -459,7 +544,11 @@ void read_contact(SceneReading& r) {
   PiezoContactSpec& spec = r.spec;
   const int dim = r.dim;
   r.problems.check_void([&] {
-    if (spec.contact.empty()) return;
+    if (spec.contact.empty()) {
+      require(!(r.json.contains("contact") && lacks_contact_region(r.json)),
+              "scene: 'contact' applies to a contact region (regions.contact); this scene has none");
+      return;
+    }
     const Json& c = r.json.at("contact");
     const auto& normal = chosen_entry(c, "law_normal", normal_law_registry());
     const auto& friction = chosen_entry(c, "law_tangential", friction_law_registry(), "none");
@@ -652,6 +741,7 @@ void read_solver(SceneReading& r) {
       scene.cutback_factor = x->as_number_in(0, 1);
       require(scene.cutback_factor > 0 && scene.cutback_factor < 1, "scene: 'solver.cutback_factor' must be in (0, 1)");
     }
+    refuse_unread_solver_keys(*s, scene.newton);
   });
 }
 
@@ -682,6 +772,7 @@ void read_output(SceneReading& r) {
     if (const auto x = o->find("energy_books")) out.energy_books = x->as_bool();
     if (const auto x = o->find("phi_f_sweep")) out.phi_f_sweep = x->as_vector();
     if (const auto x = o->find("sweep_steps")) out.sweep_steps = x->as_int_at_least(1);
+    refuse_unread_output_keys(r, *o);
   });
   r.spec.slip_threshold = out.slip_threshold;
 }

@@ -629,10 +629,10 @@ TEST(ContactBricks, RejectBadLawParametersNamingBrickAndParameter) {
   };
   NormalResponseBrick<LinearDampedResponse> normal;
   expect_message(normal, constants_of(LinearDampedResponse{-1.0}),
-                 {"brick 'normal response on contact'", "model constant 'c_nu'", "c_nu = -1"});
+                 {"brick 'normal response on contact'", "model constant 'c_nu'", "c_nu must be >= 0, got -1"});
   NormalResponseBrick<LinearDampedResponse> left("contact", {}, ParameterNames{{{"c_nu", "c_nu_left"}}});
   expect_message(left, ConstantTable{}.set("c_nu", kCNu).set("c_nu_left", -1.0),
-                 {"brick 'normal response on contact'", "model constant 'c_nu_left'", "c_nu = -1"});
+                 {"brick 'normal response on contact'", "model constant 'c_nu_left'", "c_nu must be >= 0, got -1"});
 
   const auto paired = std::make_shared<NormalResponseBrick<LinearDampedResponse>>();
   FrictionBrick<RegularizedCoulomb> coulomb("contact", paired);
@@ -641,7 +641,8 @@ TEST(ContactBricks, RejectBadLawParametersNamingBrickAndParameter) {
   // A bad c_nu of the normal law that Coulomb reads is refused by the normal brick, which reads it: the
   // friction brick lists c_nu among its data, so a model updates both when it changes.
   const ConstantTable bad_normal = constants_of(RegularizedCoulomb{0.3, 1e-3}, LinearDampedResponse{-kCNu});
-  expect_message(*paired, bad_normal, {"brick 'normal response on contact'", "model constant 'c_nu'", "c_nu = -1e+12"});
+  expect_message(*paired, bad_normal,
+                 {"brick 'normal response on contact'", "model constant 'c_nu'", "c_nu must be >= 0, got -1e+12"});
   const auto data = coulomb.data();
   EXPECT_NE(std::find(data.begin(), data.end(), "c_nu"), data.end());
 

@@ -59,7 +59,8 @@ TEST(PiezoMaterials, TheRegistryListsThePresetsAndRefusesAnUnknownNameNamingThem
   for (const char* name : kPresets) EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
   EXPECT_EQ(piezo_material_registry().key(), "material.preset");
   EXPECT_EQ(error_of([] { piezo_material("PZT-5X", "here"); }),
-            "here: unknown piezoelectric material 'PZT-5X' (known: BaTiO3, PZT-4, PZT-5A, PZT-5H)");
+            "here: unknown piezoelectric material 'PZT-5X' (known: BaTiO3, PZT-4, PZT-5A, PZT-5H); did you mean "
+            "'PZT-5A' or 'PZT-5H'?");
   for (const auto& entry : piezo_material_registry().entries()) EXPECT_FALSE(entry.doc.empty()) << entry.name;
 }
 

@@ -95,7 +95,8 @@ TEST(MaterialPreset, KeysGivenNextToThePresetOverrideIt) {
 TEST(MaterialPreset, AnUnknownPresetIsRefusedNamingTheKnownOnesAndNothingElse) {
   EXPECT_EQ(error_of([] { load_scene_file(kPaper, {R"(material={"preset": "PZT-5X", "poling": "y"})"}); }),
             "scene 'paper2d' has 1 problem:\n"
-            "  - 'material.preset': unknown piezoelectric material 'PZT-5X' (known: BaTiO3, PZT-4, PZT-5A, PZT-5H)");
+            "  - 'material.preset': unknown piezoelectric material 'PZT-5X' (known: BaTiO3, PZT-4, PZT-5A, PZT-5H); "
+            "did you mean 'PZT-5A' or 'PZT-5H'?");
 }
 
 TEST(MaterialPreset, ThePolingAxisIsRequiredKnownAndInThePlaneOfA2dModel) {
