@@ -1,7 +1,7 @@
-// A foundation law of your own, in one file: a conductive foundation that can only deliver a limited
-// charge flux. It declares its parameters, registers itself under a name, is checked by the law checker
-// at start-up, and the paper's strip (stacked by the recipe) is run with it and with the paper's linear
-// law, D.n = k_e (phi - phi_f), each chosen by its registered name.
+// A foundation law of your own (consumer/saturating_conductance.hpp): a conductive foundation that can only
+// deliver a limited charge flux. It declares its parameters, registers itself under a name, is checked by
+// the law checker at start-up, and the paper's strip (stacked by the recipe) is run with it and with the
+// paper's linear law, D.n = k_e (phi - phi_f), each chosen by its registered name.
 //
 //   build/release/examples/custom_foundation_law
 #include <algorithm>
@@ -22,6 +22,7 @@
 #include "bricks/laws/normal_laws.hpp"
 #include "bricks/piezo_materials.hpp"
 #include "bricks/testing/law_checker.hpp"
+#include "consumer/saturating_conductance.hpp"
 #include "models/piezo/initial_potential.hpp"
 #include "models/piezo/piezo_contact_recipe.hpp"
 #include "models/solvers/newton.hpp"
@@ -34,29 +35,8 @@ using namespace pc;
 // saturating at the flux k_e phi_s. A foundation law is a value type with
 //   template <class S> S operator()(const S& phi, const S& pressure) const
 // (S is double or a Dual number, which gives the brick its tangent), compile-time traits, and its
-// parameters declared once: name, member, unit, documentation, valid range, required or defaulted. The
-// brick reads them from the model's constants by these names, checked against these ranges.
-struct SaturatingConductance {
-  double k_e = 0, phi_f = 0, phi_s = 1;
-
-  static constexpr bool affine = false;                // tanh: the brick is nonlinear
-  static constexpr bool dissipative = true;            // monotone in phi
-  static constexpr bool uses_normal_pressure = false;  // conducts whether pressed or not
-
-  static constexpr auto parameters() {
-    return std::array{law_parameter("k_e", &SaturatingConductance::k_e, "C/(V m^2)",
-                                    "conductance at small potential differences", Range::at_least(0), Required::yes),
-                      law_parameter("phi_f", &SaturatingConductance::phi_f, "V", "potential of the foundation",
-                                    Range::any(), Required::yes),
-                      law_parameter("phi_s", &SaturatingConductance::phi_s, "V",
-                                    "potential difference where the flux saturates", Range::positive())};
-  }
-
-  template <class S> S operator()(const S& phi, const S& /*pressure*/) const {
-    using std::tanh;  // std::tanh for double; pc::tanh (found by argument-dependent lookup) for Dual
-    return k_e * phi_s * tanh((phi - phi_f) / phi_s);
-  }
-};
+// parameters declared once. It lives in the consumer project (the README shows it from there), which also
+// builds it into a plugin and tests it against the installed package: consumer/saturating_conductance.hpp.
 // One line makes it a foundation law that recipes (PiezoContactSpec::foundation = {"saturating", {...}})
 // and scenes can name, documented by `piezocontact describe` like the built-in ones.
 PC_REGISTER_FOUNDATION_LAW(SaturatingConductance, "saturating",

@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
   try {
     // ---- mesh and unknowns ------------------------------------------------------------------------
     // rectangle_mesh names the sides "left", "right", "bottom", "top"; the cell region is "all".
+    // [snippet stack]
+    // [snippet stack_and_run]
     auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {0.03, 0.01}, 30, 10, Shape::Triangle));
     Model model(mesh);
     model.add_unknown("v", std::make_shared<const FESpace>(mesh, 1, 2));    // P1, 2 components
@@ -54,15 +56,23 @@ int main(int argc, char** argv) {
     // The time scheme adds the affine fields u and a (with_acceleration = true: there is inertia).
     BackwardEuler scheme;
     scheme.attach(model, /*with_acceleration=*/true);
+    // [snippet stack end]
 
+    // [snippet stack_and_run end]
     // ---- constants: the bricks (and the output) read them by name ---------------------------------
     // PZT-5H from the presets, plane strain, poled along +y (Voigt xx, yy, xy, engineering shear): rho,
     // B = c^E, E = e, beta = eps^S, and the Kelvin-Voigt viscosity A = 0.01 s * B; then the paper's density.
     // The values are those of scenes/paper2d.json (tests/bricks/piezo_materials_test.cpp checks it).
-    set_material_constants(model, piezo_material("PZT-5H").tensors(2, Axis::y), 0.01);
+    // [snippet stack]
+    // [snippet stack_and_run]
+    set_material_constants(model, piezo_material("PZT-5H").tensors(2, Axis::y), 0.01);  // B, E, beta, rho; A = 0.01 B
     model.set_constant("rho", 7800.0);
+    // [snippet stack end]
 
+    // [snippet stack_and_run end]
     // ---- bricks -----------------------------------------------------------------------------------
+    // [snippet stack]
+    // [snippet stack_and_run]
     // Bulk: rho a.w + A eps(v):eps(w) + B eps(u):eps(w) + E^T grad phi:eps(w) - E eps(u).grad psi
     //       + beta grad phi.grad psi, all on "all" and reading the constants above.
     model.add_brick(std::make_shared<InertiaBrick>());
@@ -89,8 +99,11 @@ int main(int argc, char** argv) {
     model.add_brick(std::make_shared<FrictionBrick<ViscousFriction>>("bottom"));
     model.add_brick(std::make_shared<ConductiveFoundationBrick<LinearConductance>>("bottom"));
     model.finalize();  // binds the bricks to their regions and checks that every field is used
+    // [snippet stack end]
 
+    // [snippet stack_and_run end]
     // ---- time loop --------------------------------------------------------------------------------
+    // [snippet stack_and_run]
     StepperOptions options;
     options.end = 0.2;
     options.step = 0.2 / 50;
@@ -98,13 +111,16 @@ int main(int argc, char** argv) {
     options.prediction = Prediction::Previous;  // start each Newton solve from v_{n-1}
     NewtonSolver newton;                        // default options: see models/solvers/newton.hpp
 
+    // [snippet stack_and_run end]
     const PointLocator locator(*mesh);
     const double corner[2] = {0.03, 0.01}, centre[2] = {0.015, 0.005};
     ResultSeries series(output, "paper");
 
+    // [snippet stack_and_run]
     StepperCallbacks callbacks;
     // Before the first step: phi_0 from the electric equation at u = u_0 (the paper's initial potential).
     callbacks.on_start = [&](Model& m) { return solve_initial_potential(m, scheme, newton); };
+    // [snippet stack_and_run end]
     callbacks.on_step = [&](const Model& m, const StepRecord& step) {
       if (step.step % 10 != 0) return;
       const double u_y = evaluate_at(m.space("u"), m.values("u"), locator, corner)[1];
@@ -118,7 +134,9 @@ int main(int argc, char** argv) {
       series.write(step.step, step.time, writer);
     };
 
+    // [snippet stack_and_run]
     const RunSummary run = Stepper(options).run(model, scheme, newton, callbacks);
+    // [snippet stack_and_run end]
     if (!run.completed) {
       std::fprintf(stderr, "run stopped: %s\n", run.message.c_str());
       return 1;

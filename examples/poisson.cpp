@@ -21,6 +21,7 @@ using namespace pc;
 double exact(const double* x) { return std::sin(M_PI * x[0]) * std::exp(x[1]); }
 
 // The weak form in flux form: R(w) = integral of grad u . grad w - f w. The tangent comes from Dual numbers.
+// [snippet poisson]
 struct Poisson {
   template <class S> void operator()(const PointInput<S>& in, PointFlux<S>& out) const {
     out.f0[0][0] = -(M_PI * M_PI - 1) * exact(in.x);
@@ -28,10 +29,12 @@ struct Poisson {
   }
 };
 
+// [snippet poisson end]
 int main(int argc, char** argv) {
   const int n = argc > 1 ? std::atoi(argv[1]) : 32;
   const int order = argc > 2 ? std::atoi(argv[2]) : 2;
   try {
+    // [snippet poisson]
     auto mesh = std::make_shared<const Mesh>(rectangle_mesh({0, 0}, {1, 1}, n, n, Shape::Triangle));
     FESpace space(mesh, order, 1);
 
@@ -39,7 +42,8 @@ int main(int argc, char** argv) {
     auto term = std::make_shared<PointwiseTerm<Poisson>>("poisson", Integration::Cells,
                                                          std::vector<FieldUse>{{"u", /*gradient=*/true}},
                                                          std::vector<int>{0}, std::vector<Coupling>{{0, 0}}, Poisson{});
-    TermAssembly assembly(term, "all", {&space});
+    TermAssembly assembly(term, "all", {&space});  // the pattern and slot maps, once
+    // [snippet poisson end]
 
     // Dirichlet dofs are eliminated: they get no global index, and hold the boundary values.
     const std::vector<int> boundary = space.dofs_on("boundary");

@@ -1,4 +1,5 @@
 // Unit tests of the user's law and of its brick with the harness that the installed package ships.
+// [snippet harness]
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,14 +11,17 @@
 #include "bricks/testing/law_checker.hpp"
 #include "velocity_weakening.hpp"
 
+// [snippet harness end]
 namespace {
 
+// [snippet harness]
 const VelocityWeakeningCoulomb kLaw{0.6, 0.3, 0.05, 1e-3};
 
 TEST(VelocityWeakening, PassesTheLawChecker) {
   const pc::LawCheckReport report = pc::check_friction_law(kLaw, {.name = "velocity weakening"});
   EXPECT_TRUE(report.ok()) << report;
 }
+// [snippet harness end]
 
 // Far above v_c the coefficient is mu_k, near rest (but above eps) it is mu_s: |p_tau| = mu |p_nu|.
 TEST(VelocityWeakening, FallsFromStaticToKineticFriction) {
