@@ -1,8 +1,9 @@
 // The command-line runner (installed as `piezocontact`):
 //   piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] [--resume]
-//                    [--target-error E]
-//   piezocontact check SCENE [--set key=value ...]
+//                    [--target-error E] [--plugin LIB ...]
+//   piezocontact check SCENE [--set key=value ...] [--plugin LIB ...]
 //   piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]
+//                      [--plugin LIB ...]
 //   piezocontact list [--plugin LIB ...]
 //   piezocontact describe [NAME] [--markdown] [--plugin LIB ...]
 // `run` validates the whole scene, then runs each foundation it lists and writes the results (see
@@ -10,13 +11,17 @@
 // without running it, so it refuses whatever `run` would refuse before its first step. --set overrides
 // any scene value by its dotted path: --set contact.c_nu=1e14 --set mesh.nx=120. `list` and `describe`
 // print what a scene can name (laws, time schemes, solvers) with every parameter, from the registries;
-// --plugin loads a plugin first (a scene loads those it names in "plugins"). --resume continues the run
+// --plugin loads a plugin first, for every command (a scene loads those it names in "plugins", so a scene
+// may name a law of a plugin it does not list when the command line loads it). --resume continues the run
 // recorded in DIR/manifest.json (same scene and overrides) from its last checkpoint. `modes` writes the
 // N (default 6) eigenfrequencies nearest to HZ (default 0: the lowest) and their shapes into
 // DIR/<scene>/modes/ (models/scene/scene_modes.hpp); --open-circuit floats the driven electrodes (no
 // charge) instead of shorting them, into DIR/<scene>/modes_open_circuit/. --target-error 1% (or 0.01)
 // is the scene key target_error: pilot runs, then the order, mesh, scheme and steps whose estimated
 // error is below it at the least predicted cost (models/scene/target_error.hpp).
+// Exit status: 0 done, 1 a run stopped or an error, 2 a bad command line, 3 (`run --target-error`) every
+// run completed but one's own estimate is above the target (models/scene/target_error_outcome.hpp).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -32,12 +37,15 @@
 #include "assembly/blas_info.hpp"
 #include "assembly/error.hpp"
 #include "assembly/processes.hpp"
+#include "assembly/suggestions.hpp"
 #include "assembly/version.hpp"
+#include "models/output/duration_text.hpp"
 #include "models/scene/interrupts.hpp"
 #include "models/scene/plugins.hpp"
 #include "models/scene/registry_catalog.hpp"
 #include "models/scene/scene_modes.hpp"
 #include "models/scene/scene_runner.hpp"
+#include "models/scene/target_error_outcome.hpp"
 #include "models/scene/time_estimate.hpp"
 
 namespace {
@@ -66,12 +74,15 @@ int usage() {
       stderr,
       "usage: piezocontact run SCENE [--out DIR] [--set key=value ...] [--only FOUNDATION] [--no-sweep] [--quiet] "
       "[--resume]\n"
-      "                        [--target-error E (a fraction, 0.01, or a percentage, 1%%)]\n"
-      "       piezocontact check SCENE [--set key=value ...]\n"
+      "                        [--target-error E (a fraction, 0.01, or a percentage, 1%%)] [--plugin LIB ...]\n"
+      "       piezocontact check SCENE [--set key=value ...] [--plugin LIB ...]\n"
       "       piezocontact modes SCENE [--out DIR] [--set key=value ...] [--count N] [--shift HZ] [--open-circuit]\n"
+      "                          [--plugin LIB ...]\n"
       "       piezocontact list [--plugin LIB ...]\n"
       "       piezocontact describe [NAME] [--markdown] [--plugin LIB ...]\n"
-      "       piezocontact --version\n");
+      "       piezocontact --version\n"
+      "exit status: 0 done, 1 a run stopped or an error, 2 a bad command line, 3 a --target-error run missed its "
+      "target\n");
   return 2;
 }
 
@@ -163,7 +174,7 @@ int main(int argc, char** argv) {
   const std::string command = argv[1];
   if (command != "run" && command != "check" && command != "modes") return usage();
   const std::string scene_path = argv[2];
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides, plugins;
   pc::SceneRunOptions options;
   options.output_directory = "results";
   pc::ModalOptions modal;
@@ -185,6 +196,8 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--set")
       overrides.push_back(value());
+    else if (arg == "--plugin")
+      plugins.push_back(value());
     else if (arg == "--only")
       options.only.push_back(value());
     else if (arg == "--no-sweep")
@@ -207,6 +220,7 @@ int main(int argc, char** argv) {
     }
   }
   try {
+    for (const std::string& plugin : plugins) pc::load_plugin(plugin);  // before the scene names its laws
     const pc::Scene scene = pc::load_scene_file(scene_path, overrides);
     if (command == "modes") {
       const std::string directory =
@@ -224,29 +238,38 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (command == "check") {
-      // Building each foundation's model runs every check the run would make before its first step.
+      // Building each foundation's model runs every check the run would make before its first step. The
+      // prediction is the run's own (its first progress line), of the largest foundation's model.
       int dofs = 0;
+      pc::TimeEstimate predicted;
       for (const pc::SceneFoundation& f : scene.foundations) {
         pc::FoundationRun run(scene, f);
-        dofs = 0;
-        for (const std::string& u : run.model().unknowns()) dofs += run.model().space(u).num_dofs();
+        const pc::TimeEstimate estimate = pc::estimate_run_seconds(run.model(), scene.steps);
+        if (estimate.seconds < predicted.seconds) continue;
+        predicted = estimate;
+        dofs = pc::model_dofs(run.model());
       }
-      const pc::TimeEstimate predicted = pc::estimate_run_seconds(scene.spec.mesh->dim(), dofs, scene.steps);
       if (pc::processes::is_writer())
         std::printf(
-            "scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s; %d dofs, predicted %.3g s per "
+            "scene '%s' is valid: %s, %zu foundation(s), %d steps to T = %g s; %d dofs, predicted %s per "
             "foundation (%s)\n",
             scene.name.c_str(), scene.mesh_description.c_str(), scene.foundations.size(), scene.steps, scene.end_time,
-            dofs, predicted.seconds, predicted.basis);
+            dofs, pc::describe_duration(predicted.seconds).c_str(), predicted.basis);
       return 0;
     }
-    for (const std::string& name : options.only) {
-      bool known = false;
-      for (const auto& f : scene.foundations) known = known || f.name == name;
-      if (!known) throw pc::Error("--only: the scene has no foundation '" + name + "'");
+    // A name the scene lacks is refused with the ones it has, and the nearest if one is close.
+    std::vector<std::string> foundations;
+    std::string listed;
+    for (const auto& f : scene.foundations) {
+      foundations.push_back(f.name);
+      listed += (listed.empty() ? "" : ", ") + f.name;
     }
+    for (const std::string& name : options.only)
+      pc::require(std::find(foundations.begin(), foundations.end(), name) != foundations.end(),
+                  "--only: the scene has no foundation '", name, "' (it has: ", listed, ")",
+                  pc::did_you_mean(name, foundations));
     pc::install_interrupt_handlers();  // SIGINT, SIGTERM: stop after the current step, results written
-    return pc::run_scene(scene, options) ? 0 : 1;
+    return pc::run_scene_outcome(scene, options).exit_status();
   } catch (const pc::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return failed();

@@ -1,19 +1,14 @@
 #include "models/scene/run_progress.hpp"
 
+#include <cstdarg>
 #include <cstdio>
 #include <vector>
 
-#include "assembly/error.hpp"
+#include "models/output/duration_text.hpp"
 #include "models/scene/time_estimate.hpp"
 
 namespace pc {
 namespace {
-
-std::string describe_duration(double seconds) {
-  if (seconds < 90) return message(int(seconds + 0.5), " s");
-  if (seconds < 5400) return message(int(seconds / 60 + 0.5), " min");
-  return message(int(seconds / 3600 + 0.5), " h");
-}
 
 std::string eta(double elapsed, double done_fraction) {
   if (done_fraction <= 0) return "?";
@@ -33,6 +28,15 @@ std::string residual_text(const std::vector<double>& norms) {
 
 }  // namespace
 
+void print_run_line(const std::string& run, const char* format, ...) {
+  std::printf("  [%s] ", run.c_str());
+  va_list arguments;
+  va_start(arguments, format);
+  std::vprintf(format, arguments);
+  va_end(arguments);
+  std::putchar('\n');
+}
+
 void RunProgress::begin(double first_time) {
   first_time_ = first_time;
   last_line_ = std::chrono::steady_clock::now();
@@ -42,17 +46,17 @@ double RunProgress::since_last_line() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - last_line_).count();
 }
 
-void RunProgress::predicted(int dim, int ndof) const {
-  const TimeEstimate predicted = estimate_run_seconds(dim, ndof, steps_);
-  std::printf("  [%s] %d dofs, %d steps: predicted %s (%s)\n", foundation_.c_str(), ndof, steps_,
-              describe_duration(predicted.seconds).c_str(), predicted.basis);
+void RunProgress::predicted(const Model& model) const {
+  const TimeEstimate predicted = estimate_run_seconds(model, steps_);
+  print_run_line(foundation_, "%d dofs, %d steps: predicted %s (%s)", model_dofs(model), steps_,
+                 describe_duration(predicted.seconds).c_str(), predicted.basis);
 }
 
 void RunProgress::iteration(const NewtonReport& report, int step) {
   if (since_last_line() < progress_seconds) return;
   last_line_ = std::chrono::steady_clock::now();
-  std::printf("  [%s] step %d: Newton iteration %d, |R| = %s\n", foundation_.c_str(), step,
-              int(report.history.size()) - 1, residual_text(report.history.back().residual_norms).c_str());
+  print_run_line(foundation_, "step %d: Newton iteration %d, |R| = %s", step, int(report.history.size()) - 1,
+                 residual_text(report.history.back().residual_norms).c_str());
   std::fflush(stdout);
 }
 
@@ -62,12 +66,12 @@ void RunProgress::step(const StepRecord& r) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const std::string residuals = residual_text(r.newton.history.back().residual_norms);
   const auto& diagnostics = r.newton.diagnostics;
-  std::printf("  [%s] step %d/%d  t = %.4g s  Newton %d (%s)  |R| = %s  in contact %g, sliding %g  left ~%s\n",
-              foundation_.c_str(), r.step, steps_, r.time, r.newton.iterations, to_string(r.newton.outcome).c_str(),
-              residuals.c_str(),
-              diagnostics.count("contact_nodes_in_compression") ? diagnostics.at("contact_nodes_in_compression") : 0.0,
-              diagnostics.count("contact_nodes_in_slip") ? diagnostics.at("contact_nodes_in_slip") : 0.0,
-              eta(elapsed, (r.time - first_time_) / (scene_.end_time - first_time_)).c_str());
+  print_run_line(
+      foundation_, "step %d/%d  t = %.4g s  Newton %d (%s)  |R| = %s  in contact %g, sliding %g  left ~%s", r.step,
+      steps_, r.time, r.newton.iterations, to_string(r.newton.outcome).c_str(), residuals.c_str(),
+      diagnostics.count("contact_nodes_in_compression") ? diagnostics.at("contact_nodes_in_compression") : 0.0,
+      diagnostics.count("contact_nodes_in_slip") ? diagnostics.at("contact_nodes_in_slip") : 0.0,
+      eta(elapsed, (r.time - first_time_) / (scene_.end_time - first_time_)).c_str());
   std::fflush(stdout);
 }
 

@@ -22,6 +22,7 @@
 #include "models/output/checkpoint.hpp"
 #include "models/output/contact_output_fields.hpp"
 #include "models/output/csv_log.hpp"
+#include "models/output/duration_text.hpp"
 #include "models/output/piezo_fields.hpp"
 #include "models/output/result_series.hpp"
 #include "models/piezo/contact_resultant.hpp"
@@ -35,6 +36,8 @@
 #include "models/scene/run_manifest.hpp"
 #include "models/scene/run_progress.hpp"
 #include "models/scene/target_error.hpp"
+#include "models/scene/target_error_format.hpp"
+#include "models/scene/target_error_outcome.hpp"
 
 namespace pc {
 namespace {
@@ -590,7 +593,7 @@ void FoundationPass::start_afresh() {
 
 // The predicted time, and Newton's iterations' lines inside a long step.
 void FoundationPass::start_progress() {
-  progress_lines_.predicted(dim_, result_.ndof);
+  progress_lines_.predicted(m_);
   newton_.set_iteration_callback([this](const NewtonReport& report) {
     note_linear_strategy();  // as soon as auto has chosen, not after a long first step
     progress_lines_.iteration(report, done_.steps + 1);
@@ -783,7 +786,7 @@ void FoundationPass::add_phases(const NewtonReport& newton) {
 void FoundationPass::note_linear_strategy() {
   if (result_.linear_strategy == newton_.strategy_explanation()) return;
   result_.linear_strategy = newton_.strategy_explanation();
-  if (progress_) std::printf("  [%s] %s\n", foundation_.name.c_str(), result_.linear_strategy.c_str());
+  if (progress_) print_run_line(foundation_.name, "%s", result_.linear_strategy.c_str());
 }
 
 void FoundationPass::note_space_error(const SpaceErrorEstimate& estimate) {
@@ -845,13 +848,16 @@ class SceneRun {
         writer_(processes::is_writer()),
         progress_(options.progress && writer_) {}
   void run_foundations();
+  void note_what_the_sweep_keeps() const;
   void run_sweep();
   bool all_completed() const { return all_completed_; }
+  bool target_met() const { return target_met_; }
   const std::string& stop_reason() const { return stop_reason_; }
 
  private:
   void run_foundation(const SceneFoundation& f);
-  void print_result(const SceneFoundation& f, const FoundationRunResult& r) const;
+  void print_result(const SceneFoundation& f, const FoundationRunResult& r);
+  const SceneFoundation* swept_foundation() const;
   void sweep_phi_f(const SceneFoundation& swept);
   void stopped(const std::string& part, const std::string& reason);
 
@@ -862,6 +868,7 @@ class SceneRun {
   // Distributed, the writer process keeps the folder, its lock and its manifest; the others compute.
   const bool writer_, progress_;
   bool all_completed_ = true;
+  bool target_met_ = true;  // every target-error run met its target
   std::string stop_reason_;
 };
 
@@ -914,20 +921,21 @@ void SceneRun::run_foundation(const SceneFoundation& f) {
 }
 
 // The run's line of results, and the target-error mode's estimate against its target.
-void SceneRun::print_result(const SceneFoundation& f, const FoundationRunResult& r) const {
+void SceneRun::print_result(const SceneFoundation& f, const FoundationRunResult& r) {
   if (progress_)
     std::printf(
-        "  %s: %s in %.2f s (VTU output %.2f s), %d Newton iterations (max %d per step); max|ux| = %.4g m, "
+        "  %s: %s in %s (VTU output %s), %d Newton iterations (max %d per step); max|ux| = %.4g m, "
         "max|uy| = %.4g m%s, phi in [%.4g, %.4g] V%s\n",
-        f.name.c_str(), r.completed ? "completed" : "STOPPED", r.wall_seconds, r.vtu_seconds, r.newton_iterations_total,
-        r.newton_iterations_max_per_step, r.max_abs_ux, r.max_abs_uy,
-        r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min, r.phi_max,
-        r.message.empty() ? "" : ("; " + r.message).c_str());
-  if (progress_ && scene_.target_choice) {
-    const double space = r.space_error_peak(), time = r.time_error_peak;
-    std::printf("  %s: target error %.3g, estimated %.3g (space %.3g + time %.3g; predicted %.3g + %.3g)\n",
-                f.name.c_str(), scene_.target_choice->target, space + time, space, time,
-                scene_.target_choice->predicted_space, scene_.target_choice->predicted_time);
+        f.name.c_str(), r.completed ? "completed" : "STOPPED", describe_duration(r.wall_seconds).c_str(),
+        describe_duration(r.vtu_seconds).c_str(), r.newton_iterations_total, r.newton_iterations_max_per_step,
+        r.max_abs_ux, r.max_abs_uy, r.dim == 3 ? message(", max|uz| = ", r.max_abs_uz, " m").c_str() : "", r.phi_min,
+        r.phi_max, r.message.empty() ? "" : ("; " + r.message).c_str());
+  if (!scene_.target_choice) return;
+  if (progress_) std::printf("  %s: %s\n", f.name.c_str(), target_result_line(*scene_.target_choice, r).c_str());
+  if (!pc::target_met(*scene_.target_choice, r)) {
+    target_met_ = false;
+    std::fflush(stdout);  // a missed target is said whatever --quiet says
+    if (writer_) std::fprintf(stderr, "%s\n", target_missed_warning(*scene_.target_choice, r).c_str());
   }
 }
 
@@ -935,13 +943,10 @@ void SceneRun::print_result(const SceneFoundation& f, const FoundationRunResult&
 // whose law has a phi_f: each run changes that constant only. A resumed run that stopped in the sweep
 // runs it again (its runs are short and write one table at the end).
 void SceneRun::run_sweep() {
-  const auto swept = std::find_if(scene_.foundations.begin(), scene_.foundations.end(), [](const SceneFoundation& f) {
-    return find_parameter(foundation_law_registry().at(f.law.name, "foundation").parameters, "phi_f") != nullptr;
-  });
+  const SceneFoundation* swept = swept_foundation();
   const bool sweep_done_before =
       processes::broadcast(manifest_ && options_.resume && manifest_->part_state(sweep_part) == "completed");
-  if (options_.sweep && !scene_.output.phi_f_sweep.empty() && swept != scene_.foundations.end() && !out_.empty() &&
-      !sweep_done_before) {
+  if (swept && !sweep_done_before) {
     if (const std::string reason = agreed_interrupt_reason(); !reason.empty()) {
       stopped(sweep_part, message("not started: ", reason));
     } else {
@@ -950,16 +955,45 @@ void SceneRun::run_sweep() {
   }
 }
 
+// The foundation the sweep runs (null when there is no sweep to run): the first whose law has a phi_f.
+const SceneFoundation* SceneRun::swept_foundation() const {
+  if (!options_.sweep || scene_.output.phi_f_sweep.empty() || out_.empty()) return nullptr;
+  const auto swept = std::find_if(scene_.foundations.begin(), scene_.foundations.end(), [](const SceneFoundation& f) {
+    return find_parameter(foundation_law_registry().at(f.law.name, "foundation").parameters, "phi_f") != nullptr;
+  });
+  return swept == scene_.foundations.end() ? nullptr : &*swept;
+}
+
+// Before the first run: a --set time.steps does not reach the sweep's runs when output.sweep_steps gives
+// them their own, which the user, shortening a run, would not expect; said once (nothing when the same
+// overrides set output.sweep_steps too).
+void SceneRun::note_what_the_sweep_keeps() const {
+  if (!progress_ || scene_.output.sweep_steps <= 0 || !swept_foundation()) return;
+  std::string steps_override;
+  for (const std::string& o : scene_.overrides) {
+    const std::string key = o.substr(0, o.find('='));
+    if (key == "output.sweep_steps") return;
+    if (key == "time.steps") steps_override = o;
+  }
+  if (!steps_override.empty())
+    std::printf("note: --set %s applies to the main runs; the phi_f sweep keeps its %d steps (output.sweep_steps)\n",
+                steps_override.c_str(), scene_.output.sweep_steps);
+}
+
 // The sweep's runs, OUT/sweep_phi_f.csv rewritten after each.
 void SceneRun::sweep_phi_f(const SceneFoundation& swept) {
   if (manifest_) manifest_->set_part(sweep_part, "running");
   FoundationRun sweep(scene_, swept);
   std::vector<std::vector<double>> rows;
   bool sweep_completed = true;
-  std::string sweep_message;
+  std::string sweep_message, linear_strategy;
   for (double phi_f : scene_.output.phi_f_sweep) {
     sweep.model().set_constant("phi_f", phi_f);
     const FoundationRunResult r = sweep.run("", false, scene_.output.sweep_steps);
+    // The sweep's runs print no progress; what condensation = "auto" chose, once per choice, as a run's.
+    if (progress_ && r.linear_strategy != linear_strategy && !r.linear_strategy.empty())
+      print_run_line(message("phi_f sweep ", phi_f, " V"), "%s", r.linear_strategy.c_str());
+    linear_strategy = r.linear_strategy;
     if (!r.completed) {
       sweep_completed = false;
       sweep_message = message("phi_f = ", phi_f, " V: ", r.message);
@@ -980,14 +1014,23 @@ void SceneRun::sweep_phi_f(const SceneFoundation& swept) {
 }  // namespace
 
 bool run_scene(const Scene& scene, const SceneRunOptions& options) {
+  return run_scene_outcome(scene, options).completed;
+}
+
+SceneRunOutcome run_scene_outcome(const Scene& scene, const SceneRunOptions& options) {
   set_assembly_threads(scene.threads);               // 0: PIEZOCONTACT_THREADS or the cores
   if (scene.target_error && !scene.target_choice) {  // the target-error mode: choose, then run the choice
     const bool talk = options.progress && processes::is_writer();
-    if (talk) std::printf("target error %g: pilot runs\n", *scene.target_error);
+    const std::string target = percent(*scene.target_error);
+    if (talk) std::printf("target error %s: pilot runs\n", target.c_str());
     const Scene chosen = scene_for_target_error(scene, options.only, talk);
+    const TargetErrorChoice& choice = *chosen.target_choice;
+    if (talk) std::printf("target error %s: %s\n", target.c_str(), choice.rates.c_str());
+    std::fflush(stdout);  // the rates' warnings are said whatever --quiet says
     if (processes::is_writer())
-      std::printf("target error %g: %s\n", *scene.target_error, chosen.target_choice->explanation.c_str());
-    return run_scene(chosen, options);
+      for (const std::string& warning : choice.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
+    if (processes::is_writer()) std::printf("target error %s: %s\n", target.c_str(), choice.explanation.c_str());
+    return run_scene_outcome(chosen, options);
   }
   const std::string& out = options.output_directory;
   // Before the first step: a directory that cannot be written or is in use costs no computing.
@@ -1002,6 +1045,7 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
     require(!options.resume, "--resume needs the output directory (--out) of the run to resume");
   }
   SceneRun run(scene, options, manifest.get());
+  run.note_what_the_sweep_keeps();
   // Whatever stops the run, its manifest says so: an error (a full disk) is recorded before it goes on up.
   try {
     reserve_blas_workspace();  // now, while memory is plentiful (assembly/blas_workspace.hpp)
@@ -1018,7 +1062,7 @@ bool run_scene(const Scene& scene, const SceneRunOptions& options) {
     throw;
   }
   if (manifest) manifest->finish(run.all_completed(), run.stop_reason());
-  return run.all_completed();
+  return {run.all_completed(), run.target_met()};
 }
 
 }  // namespace pc

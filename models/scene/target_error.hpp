@@ -20,10 +20,13 @@
 // tolerance^-b with b in [1/(q+1), 1] (the local error's order, or faster where a transient is not yet
 // resolved), both measured between the tolerances a factor 8 apart. Cost: the runner's own prediction
 // (models/scene/time_estimate.hpp) for the candidate's dofs (the pilot's, scaled by the mesh factor to the
-// power of the dimension) and predicted attempts.
+// power of the dimension) and predicted attempts. The rates are checked against the theory's
+// (models/scene/target_error_rates.hpp): one far below it is a warning, and that order's candidates stay
+// within 4 times the finer pilot's cells and 64 times below the pilots' tolerance.
 // Choice. Over both order/scheme pairs, meshes 1/2 to 32 times the finer pilot's in steps of 2^(1/2), and
 // tolerances from twice the pilots' down in steps of 2^(1/2): the least predicted cost whose spatial and
-// temporal estimates add up to at most the target, run with `time.adaptive` at the chosen tolerance.
+// temporal estimates add up to at most the target times the safety margin (0.8), run with `time.adaptive`
+// at the chosen tolerance. Whether the run met the target: models/scene/target_error_outcome.hpp.
 // Candidates that would not fit in memory (the scene's own check, models/scene/memory_estimate.hpp) or
 // pass 4 million dofs are left out; when none reaches the target, the mode refuses, naming the candidate
 // with the least predicted error. The wall clock does not enter the choice, so a resumed run chooses what

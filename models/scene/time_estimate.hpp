@@ -10,11 +10,18 @@
 // the prediction is an order of magnitude, not a promise.
 namespace pc {
 
+class Model;
+
 struct TimeEstimate {
   double seconds = 0;
   const char* basis = "";  // what the figure rests on, for the message
 };
 
 TimeEstimate estimate_run_seconds(int dim, double dofs, int steps);
+// The dofs of all the model's unknowns: what a run's size is counted in.
+int model_dofs(const Model& model);
+// A run of `steps` steps of the model, from its dimension and model_dofs: what `piezocontact check`
+// and a run's first progress line predict, from this one function.
+TimeEstimate estimate_run_seconds(const Model& model, int steps);
 
 }  // namespace pc

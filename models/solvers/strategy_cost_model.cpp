@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "assembly/error.hpp"
+#include "models/output/duration_text.hpp"
 
 namespace pc {
 namespace {
@@ -24,19 +25,6 @@ constexpr double kNewtonIterationsPerFactorisation = 4.0;
 constexpr double kIterationsPerSchurFactorisation = 20.0;
 // Without an estimate from the analysis: factor entries per Jacobian nonzero (2D P1 meshes of the study).
 constexpr double kFillWithoutEstimate = 8.0;
-
-// Three significant digits in the unit that suits.
-std::string seconds(double s) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g %s",
-                s < 1e-3 ? s * 1e6
-                : s < 1  ? s * 1e3
-                         : s,
-                s < 1e-3 ? "us"
-                : s < 1  ? "ms"
-                         : "s");
-  return text;
-}
 
 std::string mebibytes(double bytes) {
   char text[32];
@@ -65,11 +53,11 @@ StrategyCosts predict_strategy_costs(const StrategyCostInputs& in) {
   // contact state moves too fast), stands for the full path too.
   c.choice = fits && c.schur_seconds <= std::min(c.krylov_seconds, c.full_seconds) ? LinearStrategy::Schur
                                                                                    : LinearStrategy::Krylov;
-  c.explanation =
-      message("condensation auto: ", static_cast<long>(m), " contact dofs of ", static_cast<long>(in.dofs),
-              "; predicted per Newton iteration full ", seconds(c.full_seconds), ", schur ", seconds(c.schur_seconds),
-              " (dense S_c^-1 ", mebibytes(c.schur_bytes), " MiB", fits ? "" : ", over the memory budget", "), krylov ",
-              seconds(c.krylov_seconds), ": ", to_string(c.choice));
+  c.explanation = message("condensation auto: ", static_cast<long>(m), " contact dofs of ", static_cast<long>(in.dofs),
+                          "; predicted per Newton iteration full ", describe_duration(c.full_seconds), ", schur ",
+                          describe_duration(c.schur_seconds), " (dense S_c^-1 ", mebibytes(c.schur_bytes), " MiB",
+                          fits ? "" : ", over the memory budget", "), krylov ", describe_duration(c.krylov_seconds),
+                          ": ", to_string(c.choice));
   return c;
 }
 

@@ -637,7 +637,7 @@ TEST(ContactBricks, RejectBadLawParametersNamingBrickAndParameter) {
   const auto paired = std::make_shared<NormalResponseBrick<LinearDampedResponse>>();
   FrictionBrick<RegularizedCoulomb> coulomb("contact", paired);
   expect_message(coulomb, constants_of(RegularizedCoulomb{0.3, 0.0}, LinearDampedResponse{kCNu}),
-                 {"brick 'friction on contact'", "model constant 'eps'", "eps = 0"});
+                 {"brick 'friction on contact'", "model constant 'eps'", "eps must be > 0, got 0"});
   // A bad c_nu of the normal law that Coulomb reads is refused by the normal brick, which reads it: the
   // friction brick lists c_nu among its data, so a model updates both when it changes.
   const ConstantTable bad_normal = constants_of(RegularizedCoulomb{0.3, 1e-3}, LinearDampedResponse{-kCNu});
@@ -648,7 +648,7 @@ TEST(ContactBricks, RejectBadLawParametersNamingBrickAndParameter) {
 
   ConductiveFoundationBrick<LinearConductance> foundation;
   expect_message(foundation, constants_of(LinearConductance{-1.0, kPhiF}),
-                 {"brick 'conductive foundation on contact'", "model constant 'k_e'", "k_e = -1"});
+                 {"brick 'conductive foundation on contact'", "model constant 'k_e'", "k_e must be >= 0, got -1"});
 }
 
 TEST(ContactStatus, CountsPressedAndSlidingNodes) {
