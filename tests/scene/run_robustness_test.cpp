@@ -21,6 +21,7 @@
 #include <sys/wait.h>
 
 #include "support/error_and_temp_dir.hpp"
+#include "support/runner_process.hpp"
 
 // Built with the runner only (PIEZOCONTACT_BUILD_EXAMPLES), whose path CMake passes.
 #ifdef PIEZOCONTACT_RUNNER
@@ -40,24 +41,11 @@ std::string read_text(const std::filesystem::path& path) {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
-struct Outcome {
-  int status = -1;  // exit status, or -1 if the runner did not exit normally (an abort is 128 + signal)
-  std::string out, err;
-};
+using Outcome = testing::RunnerOutcome;
 
 class RunRobustness : public testing::TemporaryDirectoryTest {
  protected:
-  Outcome run(const std::string& arguments) {
-    const auto out = directory_ / "stdout.txt", err = directory_ / "stderr.txt";
-    const std::string command =
-        std::string(PIEZOCONTACT_RUNNER) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
-    const int raw = std::system(command.c_str());
-    Outcome o;
-    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    o.out = read_text(out);
-    o.err = read_text(err);
-    return o;
-  }
+  Outcome run(const std::string& arguments) { return testing::run_runner(PIEZOCONTACT_RUNNER, arguments, directory_); }
 
   // Starts a long run of the paper's scene in the background (bounded by its own wall-time limit), its
   // output into `out` and its stdout and stderr into `log`; `extra` are more runner arguments.
